@@ -1,0 +1,61 @@
+#pragma once
+
+#include <deal.II/base/point.h>
+
+#include <string>
+#include <vector>
+
+namespace vesicle_iga
+{
+  using namespace dealii;
+
+  /**
+   * A set of boundary pieces of a patch, read from a .prm string such as
+   *   "x-min; x-max; y-min{x:0.25:0.75}"
+   * Face names are x-min, x-max, y-min, y-max, z-min, z-max (the faces of
+   * the parametric box: on an axis-aligned box these are the physical faces;
+   * on a NURBS patch x/y/z name the parametric directions xi/eta/zeta). A
+   * piece may be cut to a part of its face by one or more coordinate ranges
+   * {coordinate:min:max} in physical coordinates. "all" selects every face
+   * of the open (non-periodic) directions; "" or "none" selects nothing.
+   */
+  template <int dim>
+  class BoundarySelection
+  {
+  public:
+    BoundarySelection() = default;
+    /// Throws InputError naming @p parameter on a malformed string.
+    BoundarySelection(const std::string &text, const std::string &parameter);
+
+    bool
+    empty() const
+    {
+      return pieces.empty();
+    }
+    /// Whether some piece lies on face f (deal.II numbering 2*direction+side).
+    bool
+    touches_face(const unsigned int face) const;
+    /// Whether the physical point x of face f belongs to the selection.
+    bool
+    contains(const unsigned int face, const Point<dim> &x) const;
+    /// The same selection without coordinate ranges?
+    bool
+    whole_faces_only() const;
+
+    static std::string
+    face_name(const unsigned int face);
+
+  private:
+    struct Range
+    {
+      unsigned int coordinate;
+      double       min, max;
+    };
+    struct Piece
+    {
+      unsigned int       face;
+      std::vector<Range> ranges;
+    };
+    std::vector<Piece> pieces;
+  };
+} // namespace vesicle_iga

@@ -1,0 +1,54 @@
+#pragma once
+
+#include <deal.II/base/function.h>
+
+#include <deal.II/lac/affine_constraints.h>
+
+#include <vesicle_iga/assembly/boundary_selection.h>
+#include <vesicle_iga/parallel/spline_dof_handler.h>
+
+#include <functional>
+#include <memory>
+#include <vector>
+
+namespace vesicle_iga
+{
+  /**
+   * Strong Dirichlet conditions u_c = g_c on the selected boundary pieces,
+   * for the components with @p components[c] == true. With open knot
+   * vectors only the first layer of basis functions has a non-zero trace on
+   * a face, and that trace is a spline space of dimension dim-1: its
+   * coefficients are set to the Greville interpolant of g on the face
+   * (of g W for a NURBS geometry with weight function W), exact for data in
+   * the trace space and of optimal order otherwise. On a piece cut by
+   * coordinate ranges, the functions whose face Greville point lies in the
+   * range are constrained. Constraints are only added for locally relevant
+   * unknowns and never twice (the first condition on a corner wins).
+   */
+  template <int dim>
+  void
+  add_strong_dirichlet_constraints(
+    const SplineDofHandler<dim>              &dof_handler,
+    std::shared_ptr<const NurbsGeometry<dim>> geometry,
+    const BoundarySelection<dim>             &selection,
+    const Function<dim>                      &g,
+    const std::vector<bool>                  &components,
+    AffineConstraints<double>                &constraints);
+
+  /**
+   * Clamped condition of fourth-order problems: u = g and du/dn = g_n,
+   * imposed strongly on an axis-aligned box (no NURBS geometry) through the
+   * first two layers of coefficients. At an open end the normal derivative
+   * is (p/Delta)(c_1 - c_0) with Delta the distance to the (p+1)-th knot, so
+   * the second layer is c_1 = c_0 - Delta g_n (outward normal).
+   */
+  template <int dim>
+  void
+  add_clamped_constraints(
+    const SplineDofHandler<dim>  &dof_handler,
+    const BoundarySelection<dim> &selection,
+    const Function<dim>          &g,
+    const std::function<double(const Point<dim> &, const Tensor<1, dim> &)>
+                              &normal_derivative,
+    AffineConstraints<double> &constraints);
+} // namespace vesicle_iga

@@ -1,0 +1,35 @@
+#pragma once
+
+#include <stdexcept>
+#include <string>
+
+namespace vesicle_iga
+{
+  /**
+   * The one exception the program throws for bad user input. It always names
+   * the parameter, the value that was given and what would have been allowed,
+   * so that the message printed by main() tells the user how to fix the .prm
+   * file without reading the source.
+   */
+  class InputError : public std::runtime_error
+  {
+  public:
+    InputError(const std::string &parameter,
+               const std::string &value,
+               const std::string &allowed)
+      : std::runtime_error("Invalid value of parameter '" + parameter +
+                           "': '" + value + "'. Allowed: " + allowed + ".")
+    {}
+  };
+
+  /// Throw an InputError when @p condition is false.
+  inline void
+  check_input(const bool         condition,
+              const std::string &parameter,
+              const std::string &value,
+              const std::string &allowed)
+  {
+    if (!condition)
+      throw InputError(parameter, value, allowed);
+  }
+} // namespace vesicle_iga

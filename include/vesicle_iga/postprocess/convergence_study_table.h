@@ -1,0 +1,55 @@
+#pragma once
+
+#include <deal.II/base/convergence_table.h>
+
+#include <map>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace vesicle_iga
+{
+  using namespace dealii;
+
+  /**
+   * Error norms of a sequence of refinements for several degrees: printed
+   * per degree as a deal.II ConvergenceTable with rates log2(e_{r-1}/e_r)
+   * per halving of h (computed against the number of cells, which grows by
+   * 2^dim per uniform refinement), and written as one CSV file with the
+   * columns degree, cells, dofs, h, <norms...>.
+   */
+  class ConvergenceStudyTable
+  {
+  public:
+    ConvergenceStudyTable(const unsigned int               dim,
+                          const std::vector<std::string> &norm_names);
+
+    void
+    add_row(const unsigned int          degree,
+            const unsigned int          cells,
+            const unsigned long long    dofs,
+            const double                h,
+            const std::vector<double>  &errors);
+
+    void
+    print(std::ostream &out) const;
+    void
+    write_csv(const std::string &filename) const;
+
+    /// Rate between the last two rows of @p degree for norm @p norm.
+    double
+    last_rate(const unsigned int degree, const std::string &norm) const;
+
+  private:
+    struct Row
+    {
+      unsigned int        degree, cells;
+      unsigned long long  dofs;
+      double              h;
+      std::vector<double> errors;
+    };
+    unsigned int             dim;
+    std::vector<std::string> norms;
+    std::vector<Row>         rows;
+  };
+} // namespace vesicle_iga

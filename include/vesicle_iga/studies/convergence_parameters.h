@@ -1,0 +1,31 @@
+#pragma once
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <string>
+#include <vector>
+
+namespace vesicle_iga
+{
+  using namespace dealii;
+
+  /// Degrees, continuity and refinement levels of a convergence study.
+  struct ConvergenceParameters
+  {
+    std::vector<unsigned int> degrees;
+    int                       continuity;
+    unsigned int              min_continuity;
+    unsigned int              refinements;
+    unsigned int              extra_quadrature_points;
+    bool                      write_vtu;
+
+    static void
+    declare(ParameterHandler  &prm,
+            const std::string &default_degrees,
+            const std::string &default_refinements);
+    /// @p min_continuity: the smoothness the equation needs (1 for
+    /// fourth-order problems in primal form).
+    void
+    parse(ParameterHandler &prm, const unsigned int min_continuity);
+  };
+} // namespace vesicle_iga

@@ -1,0 +1,194 @@
+#include <deal.II/base/utilities.h>
+
+#include <vesicle_iga/base/input_error.h>
+#include <vesicle_iga/spline/box_space_parameters.h>
+
+#include <cmath>
+
+namespace vesicle_iga
+{
+  namespace
+  {
+    std::vector<double>
+    doubles(const std::string &text, const std::string &parameter)
+    {
+      try
+        {
+          return Utilities::string_to_double(
+            Utilities::split_string_list(text, ','));
+        }
+      catch (...)
+        {
+          throw InputError(parameter, text, "a comma-separated list of numbers");
+        }
+    }
+
+    template <typename T>
+    std::vector<T>
+    per_direction(const std::vector<T> &v,
+                  const unsigned int    dim,
+                  const std::string    &parameter,
+                  const std::string    &text)
+    {
+      check_input(v.size() == 1 || v.size() == dim,
+                  parameter,
+                  text,
+                  "one value, or one value per direction (" +
+                    std::to_string(dim) + ")");
+      return v.size() == 1 ? std::vector<T>(dim, v[0]) : v;
+    }
+  } // namespace
+
+
+  void
+  BoxSpaceParameters::declare(ParameterHandler  &prm,
+                              const std::string &default_lower,
+                              const std::string &default_upper,
+                              const std::string &default_elements)
+  {
+    prm.enter_subsection("Mesh");
+    prm.declare_entry("Lower corner",
+                      default_lower,
+                      Patterns::Anything(),
+                      "Lower corner of the box, one coordinate per direction "
+                      "(or one value for all).");
+    prm.declare_entry("Upper corner",
+                      default_upper,
+                      Patterns::Anything(),
+                      "Upper corner of the box.");
+    prm.declare_entry("Elements",
+                      default_elements,
+                      Patterns::Anything(),
+                      "Number of elements (knot spans) per direction on the "
+                      "coarsest level: one value or one per direction.");
+    prm.declare_entry("Grading",
+                      "1",
+                      Patterns::Anything(),
+                      "Ratio of consecutive element lengths per direction "
+                      "(1: uniform; 1.1: each element 10% longer than the "
+                      "previous one).");
+    for (const char *d : {"x", "y", "z"})
+      prm.declare_entry(std::string("Breakpoints ") + d,
+                        "",
+                        Patterns::Anything(),
+                        std::string("Explicit increasing breakpoints in ") +
+                          d +
+                          " (overrides corners, Elements and Grading for "
+                          "this direction); empty: not used.");
+    prm.declare_entry("Periodic directions",
+                      "",
+                      Patterns::Anything(),
+                      "Directions (x, y, z, comma-separated) in which the "
+                      "spline space is periodic, C^k across the seam.");
+    prm.leave_subsection();
+  }
+
+
+  void
+  BoxSpaceParameters::parse(ParameterHandler &prm, const unsigned int dim)
+  {
+    prm.enter_subsection("Mesh");
+    lower = per_direction(doubles(prm.get("Lower corner"), "Mesh/Lower corner"),
+                          dim,
+                          "Mesh/Lower corner",
+                          prm.get("Lower corner"));
+    upper = per_direction(doubles(prm.get("Upper corner"), "Mesh/Upper corner"),
+                          dim,
+                          "Mesh/Upper corner",
+                          prm.get("Upper corner"));
+    std::vector<unsigned int> n;
+    for (const double x : doubles(prm.get("Elements"), "Mesh/Elements"))
+      {
+        check_input(x >= 1 && x == std::floor(x),
+                    "Mesh/Elements",
+                    prm.get("Elements"),
+                    "positive integers");
+        n.push_back(static_cast<unsigned int>(x));
+      }
+    elements =
+      per_direction(n, dim, "Mesh/Elements", prm.get("Elements"));
+    grading = per_direction(doubles(prm.get("Grading"), "Mesh/Grading"),
+                            dim,
+                            "Mesh/Grading",
+                            prm.get("Grading"));
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        check_input(upper[d] > lower[d],
+                    "Mesh/Upper corner",
+                    prm.get("Upper corner"),
+                    "each coordinate larger than that of 'Lower corner'");
+        check_input(grading[d] > 0,
+                    "Mesh/Grading",
+                    prm.get("Grading"),
+                    "positive ratios");
+      }
+    breakpoints.assign(dim, {});
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        const std::string name = std::string("Breakpoints ") + "xyz"[d];
+        if (!Utilities::trim(prm.get(name)).empty())
+          breakpoints[d] = doubles(prm.get(name), "Mesh/" + name);
+      }
+    periodic.assign(dim, false);
+    for (const auto &d :
+         Utilities::split_string_list(prm.get("Periodic directions"), ','))
+      {
+        check_input(d.size() == 1 && d[0] >= 'x' && d[0] < char('x' + dim),
+                    "Mesh/Periodic directions",
+                    prm.get("Periodic directions"),
+                    "a comma-separated list of x, y, z (up to the dimension)");
+        periodic[d[0] - 'x'] = true;
+      }
+    prm.leave_subsection();
+  }
+
+
+  template <int dim>
+  SplineSpace<dim>
+  BoxSpaceParameters::make_space(const unsigned int degree,
+                                 const int          continuity) const
+  {
+    std::vector<KnotVector> kv;
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        std::vector<double> z = breakpoints[d];
+        if (z.empty())
+          {
+            // Geometric grading: lengths proportional to q^i.
+            const unsigned int n = elements[d];
+            const double       q = grading[d];
+            double             total = 0, len = 1;
+            for (unsigned int i = 0; i < n; ++i, len *= q)
+              total += len;
+            z.push_back(lower[d]);
+            len = 1;
+            for (unsigned int i = 0; i < n; ++i, len *= q)
+              z.push_back(z.back() + (upper[d] - lower[d]) * len / total);
+            z.back() = upper[d];
+          }
+        const int k = continuity < 0 ? int(degree) - 1 : continuity;
+        kv.emplace_back(degree,
+                        z,
+                        std::vector<int>(z.size() - 2, k),
+                        periodic[d],
+                        k,
+                        std::string("Mesh (direction ") + "xyz"[d] + ")");
+      }
+    std::array<KnotVector, dim> a = [&]() {
+      if constexpr (dim == 1)
+        return std::array<KnotVector, 1>{{kv[0]}};
+      else if constexpr (dim == 2)
+        return std::array<KnotVector, 2>{{kv[0], kv[1]}};
+      else
+        return std::array<KnotVector, 3>{{kv[0], kv[1], kv[2]}};
+    }();
+    return SplineSpace<dim>(a);
+  }
+
+  template SplineSpace<1>
+  BoxSpaceParameters::make_space<1>(const unsigned int, const int) const;
+  template SplineSpace<2>
+  BoxSpaceParameters::make_space<2>(const unsigned int, const int) const;
+  template SplineSpace<3>
+  BoxSpaceParameters::make_space<3>(const unsigned int, const int) const;
+} // namespace vesicle_iga
