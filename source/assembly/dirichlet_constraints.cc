@@ -180,7 +180,7 @@ namespace vesicle_iga
                 !constraints.is_constrained(dof))
               {
                 constraints.add_line(dof);
-                constraints.set_inhomogeneity(dof, c0[i] - delta * cn[i]);
+                constraints.set_inhomogeneity(dof, c0[i] - delta / p * cn[i]);
               }
           }
       }

@@ -14,7 +14,7 @@ namespace vesicle_iga
     const unsigned int                        max_derivative)
     : space(space_)
     , geometry(geometry_)
-    , order(max_derivative)
+    , order(geometry_ ? std::max(1u, max_derivative) : max_derivative)
     , n_local(space_.n_basis_per_element())
   {
     AssertThrow(order <= 3, ExcMessage("Derivatives up to order 3 only."));

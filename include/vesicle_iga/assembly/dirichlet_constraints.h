@@ -40,7 +40,7 @@ namespace vesicle_iga
    * imposed strongly on an axis-aligned box (no NURBS geometry) through the
    * first two layers of coefficients. At an open end the normal derivative
    * is (p/Delta)(c_1 - c_0) with Delta the distance to the (p+1)-th knot, so
-   * the second layer is c_1 = c_0 - Delta g_n (outward normal).
+   * the second layer is c_1 = c_0 - (Delta/p) g_n (outward normal).
    */
   template <int dim>
   void

@@ -64,7 +64,7 @@ namespace vesicle_iga
                   Vector<double>              &b) const override;
 
   private:
-    const BoundarySelection<dim> &selection;
+    const BoundarySelection<dim> selection;
     const Function<dim>          &m;
   };
 } // namespace vesicle_iga

@@ -67,7 +67,7 @@ namespace vesicle_iga
                   Vector<double>              &b) const override;
 
   private:
-    const BoundarySelection<dim> &selection;
+    const BoundarySelection<dim> selection;
     const Function<dim>          &g;
     const double                  penalty;
   };

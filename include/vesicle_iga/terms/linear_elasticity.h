@@ -74,7 +74,7 @@ namespace vesicle_iga
                   Vector<double>              &b) const override;
 
   private:
-    const BoundarySelection<dim> &selection;
+    const BoundarySelection<dim> selection;
     TractionFunction              traction;
   };
 } // namespace vesicle_iga

@@ -1,0 +1,18 @@
+#!/usr/bin/env bash
+# Installs what vesicle-iga needs on Debian 12 (run as root), builds it with
+# -j2 and runs the default study. README command 1.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+export DEBIAN_FRONTEND=noninteractive
+packages="libdeal.ii-dev cmake g++ make numdiff openmpi-bin python3-matplotlib gnuplot-nox"
+missing=""
+for p in $packages; do
+  dpkg -s "$p" >/dev/null 2>&1 || missing="$missing $p"
+done
+if [ -n "$missing" ]; then
+  apt-get update -qq
+  apt-get install -y -qq --no-install-recommends $missing
+fi
+tools/build.sh
+source tools/mpi-env.sh
+mpirun -np 2 build/vesicle-iga prm/poisson-mms.prm
