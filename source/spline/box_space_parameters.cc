@@ -166,6 +166,10 @@ namespace vesicle_iga
               z.push_back(z.back() + (upper[d] - lower[d]) * len / total);
             z.back() = upper[d];
           }
+        check_input(z.size() >= 2,
+                    std::string("Mesh/Breakpoints ") + "xyz"[d],
+                    std::to_string(z.size()) + " value(s)",
+                    "at least two increasing breakpoints (one element)");
         const int k = continuity < 0 ? int(degree) - 1 : continuity;
         kv.emplace_back(degree,
                         z,

@@ -56,6 +56,10 @@ namespace vesicle_iga
       solver.parse(prm);
       boundary_condition = prm.get("Boundary condition");
       prm.leave_subsection();
+      // Build every coarse space once, so that an invalid mesh is reported
+      // before any work is done.
+      for (const unsigned int p : convergence.degrees)
+        box.make_space<dim>(p, convergence.continuity);
     }
 
 
@@ -171,7 +175,8 @@ namespace vesicle_iga
                              "solution-p" + std::to_string(p));
               }
           }
-      table.print(context.pcout.get_stream());
+      if (context.pcout.is_active())
+        table.print(context.pcout.get_stream());
       if (Utilities::MPI::this_mpi_process(context.communicator) == 0)
         table.write_csv(context.output_directory + "/convergence.csv");
     }

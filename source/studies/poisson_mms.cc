@@ -57,6 +57,10 @@ namespace vesicle_iga
       nitsche_text     = prm.get("Nitsche boundaries");
       nitsche_constant = prm.get_double("Nitsche penalty");
       prm.leave_subsection();
+      // Build every coarse space once, so that an invalid mesh is reported
+      // before any work is done.
+      for (const unsigned int p : convergence.degrees)
+        box.make_space<dim>(p, convergence.continuity);
       // Parse once here, so that a malformed selection is reported before
       // any work is done.
       BoundarySelection<dim>(strong_text, "Strong Dirichlet boundaries");
@@ -168,7 +172,8 @@ namespace vesicle_iga
                              "solution-p" + std::to_string(p));
               }
           }
-      table.print(context.pcout.get_stream());
+      if (context.pcout.is_active())
+        table.print(context.pcout.get_stream());
       if (Utilities::MPI::this_mpi_process(context.communicator) == 0)
         table.write_csv(context.output_directory + "/convergence.csv");
     }
