@@ -6,6 +6,6 @@ int
 main(int argc, char *argv[])
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv);
-  return vesicle_iga::run_program(std::vector<std::string>(argv + 1,
-                                                           argv + argc));
+  return vesicle_iga::run_program(
+    std::vector<std::string>(argv + 1, argv + argc));
 }

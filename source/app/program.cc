@@ -46,15 +46,15 @@ namespace vesicle_iga
         s.declare_parameters(prm);
     }
 
-    const char *usage =
-      "Usage: vesicle-iga FILE.prm     run the study described in FILE.prm\n"
-      "       vesicle-iga -            read the parameter file from stdin\n"
-      "       vesicle-iga --print-parameters\n"
-      "                                print every parameter with its "
-      "default,\n"
-      "                                allowed values and documentation\n"
-      "       vesicle-iga --help       this text and the list of studies\n"
-      "Run in parallel with: mpirun -np N vesicle-iga FILE.prm\n";
+    const char *usage
+      = "Usage: vesicle-iga FILE.prm     run the study described in FILE.prm\n"
+        "       vesicle-iga -            read the parameter file from stdin\n"
+        "       vesicle-iga --print-parameters\n"
+        "                                print every parameter with its "
+        "default,\n"
+        "                                allowed values and documentation\n"
+        "       vesicle-iga --help       this text and the list of studies\n"
+        "Run in parallel with: mpirun -np N vesicle-iga FILE.prm\n";
 
     /// The part of a deal.II exception that describes the problem.
     std::string
@@ -134,8 +134,8 @@ namespace vesicle_iga
         if (root)
           {
             std::filesystem::create_directories(context.output_directory);
-            std::ofstream used(context.output_directory +
-                               "/parameters-used.prm");
+            std::ofstream used(context.output_directory
+                               + "/parameters-used.prm");
             prm.print_parameters(used, ParameterHandler::ShortPRM);
           }
         MPI_Barrier(comm);
@@ -147,8 +147,8 @@ namespace vesicle_iga
               pcout << "vesicle-iga: study " << study_name << ", dimension "
                     << context.dimension << ", "
                     << Utilities::MPI::n_mpi_processes(comm)
-                    << " MPI rank(s), output in "
-                    << context.output_directory << std::endl;
+                    << " MPI rank(s), output in " << context.output_directory
+                    << std::endl;
               s.create(prm, context)->run();
             }
         return 0;

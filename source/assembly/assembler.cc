@@ -32,24 +32,23 @@ namespace vesicle_iga
 
   template <int dim>
   void
-  assemble_linear_system(
-    const SplineDofHandler<dim>                  &dof_handler,
-    std::shared_ptr<const NurbsGeometry<dim>>     geometry,
-    const Quadrature<1>                          &quadrature_1d,
-    const std::vector<const AssemblyTerm<dim> *> &terms,
-    const AffineConstraints<double>              &constraints,
-    TrilinosWrappers::SparseMatrix               &matrix,
-    TrilinosWrappers::MPI::Vector                &rhs)
+  assemble_linear_system(const SplineDofHandler<dim>              &dof_handler,
+                         std::shared_ptr<const NurbsGeometry<dim>> geometry,
+                         const Quadrature<1> &quadrature_1d,
+                         const std::vector<const AssemblyTerm<dim> *> &terms,
+                         const AffineConstraints<double> &constraints,
+                         TrilinosWrappers::SparseMatrix  &matrix,
+                         TrilinosWrappers::MPI::Vector   &rhs)
   {
     const SplineSpace<dim> &space = dof_handler.get_space();
     unsigned int            order = 0;
     for (const auto *t : terms)
       order = std::max(order, t->derivative_order());
-    const unsigned int n_local =
-      space.n_basis_per_element() * dof_handler.n_components();
+    const unsigned int n_local
+      = space.n_basis_per_element() * dof_handler.n_components();
 
-    matrix = 0;
-    rhs    = 0;
+    matrix            = 0;
+    rhs               = 0;
     const auto worker = [&](const std::vector<unsigned int>::const_iterator &e,
                             ScratchData<dim> &scratch,
                             CopyData         &copy) {
@@ -113,18 +112,18 @@ namespace vesicle_iga
   template <int dim>
   std::vector<double>
   integrate_field(
-    const SplineDofHandler<dim>              &dof_handler,
-    std::shared_ptr<const NurbsGeometry<dim>> geometry,
-    const Quadrature<1>                      &quadrature_1d,
-    const unsigned int                        order,
-    const TrilinosWrappers::MPI::Vector      &ghosted,
-    const unsigned int                        n_sums,
+    const SplineDofHandler<dim>                      &dof_handler,
+    std::shared_ptr<const NurbsGeometry<dim>>         geometry,
+    const Quadrature<1>                              &quadrature_1d,
+    const unsigned int                                order,
+    const TrilinosWrappers::MPI::Vector              &ghosted,
+    const unsigned int                                n_sums,
     const std::function<void(const SplineCellValues<dim> &,
                              const unsigned int,
                              const std::vector<std::vector<double>> &,
                              std::vector<double> &)> &integrand)
   {
-    SplineCellValues<dim> values(dof_handler.get_space(),
+    SplineCellValues<dim>            values(dof_handler.get_space(),
                                  geometry,
                                  quadrature_1d,
                                  order);
@@ -141,30 +140,31 @@ namespace vesicle_iga
     return sums;
   }
 
-#define INSTANTIATE(dim)                                                      \
-  template void assemble_linear_system(                                       \
-    const SplineDofHandler<dim> &,                                            \
-    std::shared_ptr<const NurbsGeometry<dim>>,                                \
-    const Quadrature<1> &,                                                    \
-    const std::vector<const AssemblyTerm<dim> *> &,                           \
-    const AffineConstraints<double> &,                                        \
-    TrilinosWrappers::SparseMatrix &,                                         \
-    TrilinosWrappers::MPI::Vector &);                                         \
-  template std::vector<double> integrate_field(                               \
-    const SplineDofHandler<dim> &,                                            \
-    std::shared_ptr<const NurbsGeometry<dim>>,                                \
-    const Quadrature<1> &,                                                    \
-    const unsigned int,                                                       \
-    const TrilinosWrappers::MPI::Vector &,                                    \
-    const unsigned int,                                                       \
-    const std::function<void(const SplineCellValues<dim> &,                   \
-                             const unsigned int,                              \
-                             const std::vector<std::vector<double>> &,        \
-                             std::vector<double> &)> &);                      \
-  template void get_element_coefficients(const SplineDofHandler<dim> &,       \
-                                         const TrilinosWrappers::MPI::Vector &, \
-                                         const unsigned int,                  \
-                                         std::vector<std::vector<double>> &);
+#define INSTANTIATE(dim)                                               \
+  template void assemble_linear_system(                                \
+    const SplineDofHandler<dim> &,                                     \
+    std::shared_ptr<const NurbsGeometry<dim>>,                         \
+    const Quadrature<1> &,                                             \
+    const std::vector<const AssemblyTerm<dim> *> &,                    \
+    const AffineConstraints<double> &,                                 \
+    TrilinosWrappers::SparseMatrix &,                                  \
+    TrilinosWrappers::MPI::Vector &);                                  \
+  template std::vector<double> integrate_field(                        \
+    const SplineDofHandler<dim> &,                                     \
+    std::shared_ptr<const NurbsGeometry<dim>>,                         \
+    const Quadrature<1> &,                                             \
+    const unsigned int,                                                \
+    const TrilinosWrappers::MPI::Vector &,                             \
+    const unsigned int,                                                \
+    const std::function<void(const SplineCellValues<dim> &,            \
+                             const unsigned int,                       \
+                             const std::vector<std::vector<double>> &, \
+                             std::vector<double> &)> &);               \
+  template void get_element_coefficients(                              \
+    const SplineDofHandler<dim> &,                                     \
+    const TrilinosWrappers::MPI::Vector &,                             \
+    const unsigned int,                                                \
+    std::vector<std::vector<double>> &);
   INSTANTIATE(2)
   INSTANTIATE(3)
 #undef INSTANTIATE

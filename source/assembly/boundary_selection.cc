@@ -17,17 +17,17 @@ namespace vesicle_iga
   BoundarySelection<dim>::BoundarySelection(const std::string &text,
                                             const std::string &parameter)
   {
-    const std::string allowed =
-      "'all', 'none', or a ';'-separated list of faces out of " +
-      [] {
-        std::string s;
-        for (unsigned int f = 0; f < 2 * dim; ++f)
-          s += (f ? ", " : "") + face_name(f);
-        return s;
-      }() +
-      ", each optionally followed by ranges {coordinate:min:max} with "
-      "coordinate in x" +
-      (dim > 1 ? std::string(", y") : "") + (dim > 2 ? ", z" : "");
+    const std::string allowed
+      = "'all', 'none', or a ';'-separated list of faces out of " +
+        [] {
+          std::string s;
+          for (unsigned int f = 0; f < 2 * dim; ++f)
+            s += (f ? ", " : "") + face_name(f);
+          return s;
+        }()
+        + ", each optionally followed by ranges {coordinate:min:max} with "
+          "coordinate in x"
+        + (dim > 1 ? std::string(", y") : "") + (dim > 2 ? ", z" : "");
     const std::string trimmed = Utilities::trim(text);
     if (trimmed.empty() || trimmed == "none")
       return;
@@ -37,11 +37,10 @@ namespace vesicle_iga
           pieces.push_back({f, {}});
         return;
       }
-    for (const std::string &item :
-         Utilities::split_string_list(trimmed, ';'))
+    for (const std::string &item : Utilities::split_string_list(trimmed, ';'))
       {
-        const std::string  name = item.substr(0, item.find('{'));
-        Piece              piece{numbers::invalid_unsigned_int, {}};
+        const std::string name = item.substr(0, item.find('{'));
+        Piece             piece{numbers::invalid_unsigned_int, {}};
         for (unsigned int f = 0; f < 2 * dim; ++f)
           if (Utilities::trim(name) == face_name(f))
             piece.face = f;
@@ -57,11 +56,12 @@ namespace vesicle_iga
                         parameter,
                         text,
                         allowed);
-            const auto fields =
-              Utilities::split_string_list(rest.substr(1, close - 1), ':');
-            check_input(fields.size() == 3 && fields[0].size() == 1 &&
-                          std::string("xyz").substr(0, dim).find(
-                            fields[0][0]) != std::string::npos,
+            const auto fields
+              = Utilities::split_string_list(rest.substr(1, close - 1), ':');
+            check_input(fields.size() == 3 && fields[0].size() == 1
+                          && std::string("xyz").substr(0, dim).find(
+                               fields[0][0])
+                               != std::string::npos,
                         parameter,
                         text,
                         allowed);
@@ -109,8 +109,8 @@ namespace vesicle_iga
         {
           bool inside = true;
           for (const auto &r : p.ranges)
-            inside = inside && x[r.coordinate] >= r.min - 1e-12 &&
-                     x[r.coordinate] <= r.max + 1e-12;
+            inside = inside && x[r.coordinate] >= r.min - 1e-12
+                     && x[r.coordinate] <= r.max + 1e-12;
           if (inside)
             return true;
         }

@@ -12,31 +12,30 @@ namespace vesicle_iga
      */
     template <int dim>
     void
-    interpolate_on_face(
-      const SplineSpace<dim>                                      &space,
-      std::shared_ptr<const NurbsGeometry<dim>>                    geometry,
-      const unsigned int                                           face,
-      const std::function<double(const Point<dim> &, const Point<dim> &)>
-                                  &value,
-      std::vector<unsigned int>   &basis,
-      std::vector<double>         &coefficients,
-      std::vector<Point<dim>>     &greville_x)
+    interpolate_on_face(const SplineSpace<dim>                   &space,
+                        std::shared_ptr<const NurbsGeometry<dim>> geometry,
+                        const unsigned int                        face,
+                        const std::function<double(const Point<dim> &,
+                                                   const Point<dim> &)> &value,
+                        std::vector<unsigned int>                       &basis,
+                        std::vector<double>     &coefficients,
+                        std::vector<Point<dim>> &greville_x)
     {
-      const unsigned int d = face / 2;
-      std::array<KnotVector, dim - 1> other;
+      const unsigned int                d = face / 2;
+      std::array<KnotVector, dim - 1>   other;
       std::array<unsigned int, dim - 1> dirs;
       for (unsigned int k = 0, j = 0; k < dim; ++k)
         if (k != d)
           {
-            other[j] = space.knot_vector(k);
+            other[j]  = space.knot_vector(k);
             dirs[j++] = k;
           }
       const SplineSpace<dim - 1> trace(other);
       const double               xi_d = (face % 2) ?
                                           space.knot_vector(d).breakpoints().back() :
                                           space.knot_vector(d).breakpoints().front();
-      const unsigned int layer_index =
-        (face % 2) ? space.knot_vector(d).n_basis() - 1 : 0;
+      const unsigned int         layer_index
+        = (face % 2) ? space.knot_vector(d).n_basis() - 1 : 0;
 
       std::vector<double> values(trace.n_basis());
       basis.resize(trace.n_basis());
@@ -55,9 +54,9 @@ namespace vesicle_iga
               xi[dirs[j]] = g[j];
               bm[dirs[j]] = m[j];
             }
-          basis[i]      = space.basis_index(bm);
-          double weight = 1.;
-          Point<dim> x  = xi;
+          basis[i]          = space.basis_index(bm);
+          double     weight = 1.;
+          Point<dim> x      = xi;
           if (geometry)
             {
               x = geometry->point(xi);
@@ -85,11 +84,12 @@ namespace vesicle_iga
     const std::vector<bool>                  &components,
     AffineConstraints<double>                &constraints)
   {
-    const SplineSpace<dim> &space = dof_handler.get_space();
+    const SplineSpace<dim> &space    = dof_handler.get_space();
     const IndexSet         &relevant = dof_handler.locally_relevant_dofs();
     for (unsigned int f = 0; f < 2 * dim; ++f)
       {
-        if (!selection.touches_face(f) || space.knot_vector(f / 2).is_periodic())
+        if (!selection.touches_face(f)
+            || space.knot_vector(f / 2).is_periodic())
           continue;
         for (unsigned int c = 0; c < dof_handler.n_components(); ++c)
           {
@@ -111,8 +111,8 @@ namespace vesicle_iga
             for (unsigned int i = 0; i < basis.size(); ++i)
               {
                 const auto dof = dof_handler.dof_index(basis[i], c);
-                if (selection.contains(f, x[i]) && relevant.is_element(dof) &&
-                    !constraints.is_constrained(dof))
+                if (selection.contains(f, x[i]) && relevant.is_element(dof)
+                    && !constraints.is_constrained(dof))
                   {
                     constraints.add_line(dof);
                     constraints.set_inhomogeneity(dof, coefficients[i]);
@@ -129,8 +129,7 @@ namespace vesicle_iga
     const SplineDofHandler<dim>  &dof_handler,
     const BoundarySelection<dim> &selection,
     const Function<dim>          &g,
-    const std::function<double(const Point<dim> &, const Tensor<1, dim> &)>
-                              &gn,
+    const std::function<double(const Point<dim> &, const Tensor<1, dim> &)> &gn,
     AffineConstraints<double> &constraints)
   {
     const SplineSpace<dim> &space = dof_handler.get_space();
@@ -153,9 +152,7 @@ namespace vesicle_iga
           space,
           nullptr,
           f,
-          [&](const Point<dim> &p_, const Point<dim> &) {
-            return g.value(p_);
-          },
+          [&](const Point<dim> &p_, const Point<dim> &) { return g.value(p_); },
           basis,
           c0,
           x);
@@ -173,11 +170,11 @@ namespace vesicle_iga
           x);
         for (unsigned int i = 0; i < basis.size(); ++i)
           {
-            auto m = space.basis_multi_index(basis[i]);
-            m[d]   = (f % 2) ? n - 2 : 1;
+            auto m         = space.basis_multi_index(basis[i]);
+            m[d]           = (f % 2) ? n - 2 : 1;
             const auto dof = dof_handler.dof_index(space.basis_index(m));
-            if (selection.contains(f, x[i]) && relevant.is_element(dof) &&
-                !constraints.is_constrained(dof))
+            if (selection.contains(f, x[i]) && relevant.is_element(dof)
+                && !constraints.is_constrained(dof))
               {
                 constraints.add_line(dof);
                 constraints.set_inhomogeneity(dof, c0[i] - delta / p * cn[i]);
@@ -186,18 +183,18 @@ namespace vesicle_iga
       }
   }
 
-#define INSTANTIATE(dim)                                                      \
-  template void add_strong_dirichlet_constraints(                            \
-    const SplineDofHandler<dim> &,                                            \
-    std::shared_ptr<const NurbsGeometry<dim>>,                                \
-    const BoundarySelection<dim> &,                                           \
-    const Function<dim> &,                                                    \
-    const std::vector<bool> &,                                                \
-    AffineConstraints<double> &);                                             \
-  template void add_clamped_constraints(                                      \
-    const SplineDofHandler<dim> &,                                            \
-    const BoundarySelection<dim> &,                                           \
-    const Function<dim> &,                                                    \
+#define INSTANTIATE(dim)                                                       \
+  template void add_strong_dirichlet_constraints(                              \
+    const SplineDofHandler<dim> &,                                             \
+    std::shared_ptr<const NurbsGeometry<dim>>,                                 \
+    const BoundarySelection<dim> &,                                            \
+    const Function<dim> &,                                                     \
+    const std::vector<bool> &,                                                 \
+    AffineConstraints<double> &);                                              \
+  template void add_clamped_constraints(                                       \
+    const SplineDofHandler<dim> &,                                             \
+    const BoundarySelection<dim> &,                                            \
+    const Function<dim> &,                                                     \
     const std::function<double(const Point<dim> &, const Tensor<1, dim> &)> &, \
     AffineConstraints<double> &);
   INSTANTIATE(2)

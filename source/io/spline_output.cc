@@ -1,12 +1,10 @@
 #include <deal.II/base/quadrature_lib.h>
 
+#include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/fe/mapping_fe_field.h>
 #include <deal.II/fe/mapping_q.h>
-
-#include <deal.II/dofs/dof_tools.h>
-
 #include <deal.II/numerics/data_out.h>
 
 #include <vesicle_iga/assembly/assembler.h>
@@ -32,14 +30,13 @@ namespace vesicle_iga
 
   template <int dim>
   void
-  interpolate_to_fe_field(
-    const SplineDofHandler<dim>                &spline_dofs,
-    std::shared_ptr<const NurbsGeometry<dim>>   geometry,
-    const TrilinosWrappers::MPI::Vector        &ghosted,
-    const std::vector<PointEvaluator<dim>>     &quantities,
-    const unsigned int                          order,
-    const DoFHandler<dim>                      &fe_dofs,
-    LinearAlgebra::distributed::Vector<double> &result)
+  interpolate_to_fe_field(const SplineDofHandler<dim>              &spline_dofs,
+                          std::shared_ptr<const NurbsGeometry<dim>> geometry,
+                          const TrilinosWrappers::MPI::Vector      &ghosted,
+                          const std::vector<PointEvaluator<dim>>   &quantities,
+                          const unsigned int                        order,
+                          const DoFHandler<dim>                    &fe_dofs,
+                          LinearAlgebra::distributed::Vector<double> &result)
   {
     const auto &fe   = fe_dofs.get_fe();
     const auto &base = fe.base_element(0);
@@ -64,14 +61,14 @@ namespace vesicle_iga
     std::vector<unsigned int> point_of_dof(fe.n_dofs_per_cell());
     for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
       {
-        const Point<dim> p =
-          base.unit_support_point(fe.system_to_base_index(i).second);
+        const Point<dim> p
+          = base.unit_support_point(fe.system_to_base_index(i).second);
         unsigned int q = 0, stride = 1;
         for (unsigned int d = 0; d < dim; ++d)
           {
-            const unsigned int k =
-              std::lower_bound(grid[d].begin(), grid[d].end(), p[d] - 1e-12) -
-              grid[d].begin();
+            const unsigned int k
+              = std::lower_bound(grid[d].begin(), grid[d].end(), p[d] - 1e-12)
+                - grid[d].begin();
             q += k * stride;
             stride *= grid[d].size();
           }
@@ -81,7 +78,7 @@ namespace vesicle_iga
     result.reinit(fe_dofs.locally_owned_dofs(),
                   DoFTools::extract_locally_relevant_dofs(fe_dofs),
                   fe_dofs.get_communicator());
-    SplineCellValues<dim> values(spline_dofs.get_space(),
+    SplineCellValues<dim>                values(spline_dofs.get_space(),
                                  geometry,
                                  QGauss<1>(1),
                                  order);
@@ -96,8 +93,9 @@ namespace vesicle_iga
           cell->get_dof_indices(dof_indices);
           for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
             if (result.locally_owned_elements().is_element(dof_indices[i]))
-              result[dof_indices[i]] = quantities[fe.system_to_component_index(
-                i).first](values, point_of_dof[i], c);
+              result[dof_indices[i]]
+                = quantities[fe.system_to_component_index(i).first](
+                  values, point_of_dof[i], c);
         }
     result.update_ghost_values();
   }
@@ -141,7 +139,7 @@ namespace vesicle_iga
   template <int dim>
   std::string
   SplineFieldWriter<dim>::write(const TrilinosWrappers::MPI::Vector &ghosted,
-                                const std::string &directory,
+                                const std::string                   &directory,
                                 const std::string &basename) const
   {
     const auto        &tria = spline_dofs.get_mesh().triangulation();
@@ -167,11 +165,11 @@ namespace vesicle_iga
       });
     interpolate_to_fe_field(
       spline_dofs, geometry, ghosted, coordinate, 0, geometry_dofs, euler);
-    const MappingQ<dim>                                                 q1(1);
+    const MappingQ<dim> q1(1);
     const MappingFEField<dim, dim, LinearAlgebra::distributed::Vector<double>>
-      curved(geometry_dofs, euler);
-    const Mapping<dim> &mapping =
-      geometry ? static_cast<const Mapping<dim> &>(curved) : q1;
+                        curved(geometry_dofs, euler);
+    const Mapping<dim> &mapping
+      = geometry ? static_cast<const Mapping<dim> &>(curved) : q1;
 
     DataOut<dim> data_out;
     data_out.attach_dof_handler(fe_dofs);

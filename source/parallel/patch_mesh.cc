@@ -38,10 +38,8 @@ namespace vesicle_iga
     std::sort(owned_elements.begin(), owned_elements.end());
 
     if (geometry)
-      GridTools::transform([&](const Point<dim> &xi) {
-        return geometry->point(xi);
-      },
-                           tria);
+      GridTools::transform(
+        [&](const Point<dim> &xi) { return geometry->point(xi); }, tria);
   }
 
 

@@ -12,7 +12,7 @@ namespace vesicle_iga
     , space(space_)
     , nc(n_comp)
   {
-    const MPI_Comm     comm = mesh.get_communicator();
+    const MPI_Comm     comm    = mesh.get_communicator();
     const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
     const unsigned int rank    = Utilities::MPI::this_mpi_process(comm);
     const unsigned int n       = space.n_basis();
@@ -21,8 +21,8 @@ namespace vesicle_iga
     std::vector<unsigned int> count(n_ranks, 0);
     for (unsigned int i = 0; i < n; ++i)
       {
-        basis_owner[i] =
-          mesh.element_owner(space.find_element(space.greville_point(i)));
+        basis_owner[i]
+          = mesh.element_owner(space.find_element(space.greville_point(i)));
         ++count[basis_owner[i]];
       }
     std::vector<unsigned int> first(n_ranks + 1, 0);

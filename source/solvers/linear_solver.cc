@@ -59,9 +59,9 @@ namespace vesicle_iga
       }
     else
       {
-        SolverControl control(parameters.max_iterations,
+        SolverControl                     control(parameters.max_iterations,
                               parameters.tolerance * b_norm);
-        TrilinosWrappers::PreconditionAMG                 amg;
+        TrilinosWrappers::PreconditionAMG amg;
         TrilinosWrappers::PreconditionAMG::AdditionalData data;
         data.elliptic              = true;
         data.higher_order_elements = true;
@@ -76,10 +76,10 @@ namespace vesicle_iga
         catch (const SolverControl::NoConvergence &e)
           {
             throw std::runtime_error(
-              "Linear solver: CG-AMG did not converge in " +
-              std::to_string(e.last_step) + " iterations (residual " +
-              std::to_string(e.last_residual) +
-              "); raise 'Max iterations' or use 'set Method = direct'.");
+              "Linear solver: CG-AMG did not converge in "
+              + std::to_string(e.last_step) + " iterations (residual "
+              + std::to_string(e.last_residual)
+              + "); raise 'Max iterations' or use 'set Method = direct'.");
           }
         result.iterations = control.last_step();
       }

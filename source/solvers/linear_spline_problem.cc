@@ -27,7 +27,7 @@ namespace vesicle_iga
     const LinearSolverParameters                 &solver,
     TimerOutput                                  *timer)
   {
-    const MPI_Comm comm = patch_mesh.get_communicator();
+    const MPI_Comm                    comm = patch_mesh.get_communicator();
     std::optional<TimerOutput::Scope> scope;
     if (timer)
       scope.emplace(*timer, "setup");
@@ -49,7 +49,8 @@ namespace vesicle_iga
         scope.emplace(*timer, "solve");
       }
     TrilinosWrappers::MPI::Vector x(dof_handler.locally_owned_dofs(), comm);
-    const auto result = solve_linear_system(solver, matrix, x, rhs, constraints_);
+    const auto                    result
+      = solve_linear_system(solver, matrix, x, rhs, constraints_);
     ghosted_solution.reinit(dof_handler.locally_owned_dofs(),
                             dof_handler.locally_relevant_dofs(),
                             comm);

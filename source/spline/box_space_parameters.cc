@@ -19,7 +19,9 @@ namespace vesicle_iga
         }
       catch (...)
         {
-          throw InputError(parameter, text, "a comma-separated list of numbers");
+          throw InputError(parameter,
+                           text,
+                           "a comma-separated list of numbers");
         }
     }
 
@@ -33,8 +35,8 @@ namespace vesicle_iga
       check_input(v.size() == 1 || v.size() == dim,
                   parameter,
                   text,
-                  "one value, or one value per direction (" +
-                    std::to_string(dim) + ")");
+                  "one value, or one value per direction ("
+                    + std::to_string(dim) + ")");
       return v.size() == 1 ? std::vector<T>(dim, v[0]) : v;
     }
   } // namespace
@@ -71,10 +73,9 @@ namespace vesicle_iga
       prm.declare_entry(std::string("Breakpoints ") + d,
                         "",
                         Patterns::Anything(),
-                        std::string("Explicit increasing breakpoints in ") +
-                          d +
-                          " (overrides corners, Elements and Grading for "
-                          "this direction); empty: not used.");
+                        std::string("Explicit increasing breakpoints in ") + d
+                          + " (overrides corners, Elements and Grading for "
+                            "this direction); empty: not used.");
     prm.declare_entry("Periodic directions",
                       "",
                       Patterns::Anything(),
@@ -105,9 +106,8 @@ namespace vesicle_iga
                     "positive integers");
         n.push_back(static_cast<unsigned int>(x));
       }
-    elements =
-      per_direction(n, dim, "Mesh/Elements", prm.get("Elements"));
-    grading = per_direction(doubles(prm.get("Grading"), "Mesh/Grading"),
+    elements = per_direction(n, dim, "Mesh/Elements", prm.get("Elements"));
+    grading  = per_direction(doubles(prm.get("Grading"), "Mesh/Grading"),
                             dim,
                             "Mesh/Grading",
                             prm.get("Grading"));
@@ -155,8 +155,8 @@ namespace vesicle_iga
         if (z.empty())
           {
             // Geometric grading: lengths proportional to q^i.
-            const unsigned int n = elements[d];
-            const double       q = grading[d];
+            const unsigned int n     = elements[d];
+            const double       q     = grading[d];
             double             total = 0, len = 1;
             for (unsigned int i = 0; i < n; ++i, len *= q)
               total += len;

@@ -49,8 +49,8 @@ namespace vesicle_iga
                 to_string(z),
                 "at least two breakpoints (one element)");
     for (unsigned int i = 1; i < z.size(); ++i)
-      check_input(z[i] > z[i - 1] && std::isfinite(z[i]) &&
-                    std::isfinite(z[i - 1]),
+      check_input(z[i] > z[i - 1] && std::isfinite(z[i])
+                    && std::isfinite(z[i - 1]),
                   name + " breakpoints",
                   to_string(z),
                   "a finite, strictly increasing list");
@@ -61,18 +61,18 @@ namespace vesicle_iga
         check_input(continuity.size() == z.size() - 2,
                     name + " continuity",
                     std::to_string(continuity.size()) + " values",
-                    "one value per interior breakpoint (" +
-                      std::to_string(z.size() - 2) + ") or none");
+                    "one value per interior breakpoint ("
+                      + std::to_string(z.size() - 2) + ") or none");
         k = continuity;
       }
     for (const int kj : k)
       check_input(kj >= 0 && kj <= int(p) - 1,
                   name + " continuity",
                   std::to_string(kj),
-                  "0 <= k <= p-1 = " + std::to_string(int(p) - 1) +
-                    " (C^k at a knot of multiplicity p-k; a continuity not "
-                    "below the degree would make the space a single "
-                    "polynomial)");
+                  "0 <= k <= p-1 = " + std::to_string(int(p) - 1)
+                    + " (C^k at a knot of multiplicity p-k; a continuity not "
+                      "below the degree would make the space a single "
+                      "polynomial)");
     check_input(k_seam >= 0 && k_seam <= int(p) - 1,
                 name + " continuity",
                 std::to_string(k_seam),
@@ -96,13 +96,10 @@ namespace vesicle_iga
     std::vector<double> z(n_elements + 1);
     for (unsigned int i = 0; i <= n_elements; ++i)
       z[i] = a + (b - a) * i / n_elements;
-    z.back() = b;
+    z.back()     = b;
     const int kk = continuity < 0 ? int(degree) - 1 : continuity;
-    return KnotVector(degree,
-                      z,
-                      std::vector<int>(n_elements - 1, kk),
-                      periodic,
-                      kk);
+    return KnotVector(
+      degree, z, std::vector<int>(n_elements - 1, kk), periodic, kk);
   }
 
 
@@ -144,8 +141,8 @@ namespace vesicle_iga
         check_input(M >= p + 1,
                     "periodic knot vector",
                     std::to_string(m) + " elements",
-                    "at least p+1 = " + std::to_string(p + 1) +
-                      " basis functions per period (add elements)");
+                    "at least p+1 = " + std::to_string(p + 1)
+                      + " basis functions per period (add elements)");
         const double L = z[m] - z[0];
         for (int s = -1; s <= 1; ++s)
           for (const double x : period)
@@ -161,7 +158,7 @@ namespace vesicle_iga
     // at the left end of the element with those of the Bernstein
     // polynomials, a lower-triangular system (d^r B_a/ds^r (0) = 0 for a > r).
     C.assign(m, std::vector<std::array<double, 8>>(p + 1));
-    double falling = 1; // p!/(p-r)!
+    double                           falling = 1; // p!/(p-r)!
     std::vector<std::vector<double>> D(p + 1, std::vector<double>(p + 1, 0));
     for (unsigned int r = 0; r <= p; ++r)
       {
@@ -228,10 +225,10 @@ namespace vesicle_iga
         double saved = 0.;
         for (unsigned int r = 0; r < j; ++r)
           {
-            ndu[j][r]    = right[r + 1] + left[j - r];
+            ndu[j][r]         = right[r + 1] + left[j - r];
             const double temp = ndu[r][j - 1] / ndu[j][r];
-            ndu[r][j]    = saved + right[r + 1] * temp;
-            saved        = left[j - r] * temp;
+            ndu[r][j]         = saved + right[r + 1] * temp;
+            saved             = left[j - r] * temp;
           }
         ndu[j][j] = saved;
       }

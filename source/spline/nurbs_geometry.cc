@@ -15,10 +15,10 @@ namespace vesicle_iga
   {
     check_input(cp.size() == space.n_basis() && w.size() == space.n_basis(),
                 "NURBS control net",
-                std::to_string(cp.size()) + " points, " +
-                  std::to_string(w.size()) + " weights",
-                "one control point and one weight per basis function (" +
-                  std::to_string(space.n_basis()) + ")");
+                std::to_string(cp.size()) + " points, "
+                  + std::to_string(w.size()) + " weights",
+                "one control point and one weight per basis function ("
+                  + std::to_string(space.n_basis()) + ")");
     for (const double wi : w)
       check_input(wi > 0, "NURBS weight", std::to_string(wi), "w > 0");
   }
@@ -76,8 +76,8 @@ namespace vesicle_iga
     // geometry: compare both maps between the interpolation points.
     for (unsigned int e = 0; e < finer.n_elements(); ++e)
       {
-        const Point<dim> xi =
-          finer.element_lower_corner(e) + 0.37 * finer.element_lengths(e);
+        const Point<dim> xi
+          = finer.element_lower_corner(e) + 0.37 * finer.element_lengths(e);
         const double err = (result.point(xi) - point(xi)).norm();
         AssertThrow(err < 1e-10 * (1 + point(xi).norm()),
                     ExcMessage("NurbsGeometry::refined_to: the target space "

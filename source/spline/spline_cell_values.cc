@@ -44,7 +44,7 @@ namespace vesicle_iga
     const unsigned int p = space.knot_vector(d).degree();
     // FE_Bernstein<1> numbers its shape functions vertex 0, vertex 1, then
     // the interior ones; B_a (a = 0..p, lexicographic) is shape function:
-    const auto         fe_index = [p](const unsigned int a) {
+    const auto fe_index = [p](const unsigned int a) {
       return a == 0 ? 0u : (a == p ? 1u : a + 1);
     };
     const FE_Bernstein<1> fe(p);
@@ -56,15 +56,15 @@ namespace vesicle_iga
         const Point<1> x(pts[q]);
         for (unsigned int a = 0; a <= p; ++a)
           {
-            const unsigned int i = fe_index(a);
+            const unsigned int i        = fe_index(a);
             t.table[0][q * (p + 1) + a] = fe.shape_value(i, x);
             if (order >= 1)
               t.table[1][q * (p + 1) + a] = fe.shape_grad(i, x)[0];
             if (order >= 2)
               t.table[2][q * (p + 1) + a] = fe.shape_grad_grad(i, x)[0][0];
             if (order >= 3)
-              t.table[3][q * (p + 1) + a] =
-                fe.shape_3rd_derivative(i, x)[0][0][0];
+              t.table[3][q * (p + 1) + a]
+                = fe.shape_3rd_derivative(i, x)[0][0][0];
           }
       }
     return t;
@@ -138,7 +138,7 @@ namespace vesicle_iga
     const Point<dim>     lower = space.element_lower_corner(element);
 
     // Univariate B-spline derivatives on the element: N = C B / h^r.
-    std::array<unsigned int, dim>                     np, nq;
+    std::array<unsigned int, dim>        np, nq;
     std::array<std::vector<double>, dim> N; // [r][q][j] flattened
     n_q = 1;
     for (unsigned int d = 0; d < dim; ++d)
@@ -189,7 +189,8 @@ namespace vesicle_iga
             qm[d] = rq % nq[d];
             rq /= nq[d];
             xi[q][d] = lower[d] + h[d] * tab[d]->points[qm[d]];
-            w *= (*wts[d])[qm[d]] * (int(d) == face / 2 && face >= 0 ? 1. : h[d]);
+            w *= (*wts[d])[qm[d]]
+                 * (int(d) == face / 2 && face >= 0 ? 1. : h[d]);
           }
 
         // Parametric derivatives of the tensor-product B-splines: the
@@ -223,8 +224,8 @@ namespace vesicle_iga
                       {
                         ++r[c];
                         const double t = D(r);
-                        T[j][a][b][c] = T[j][a][c][b] = T[j][b][a][c] =
-                          T[j][b][c][a] = T[j][c][a][b] = T[j][c][b][a] = t;
+                        T[j][a][b][c] = T[j][a][c][b] = T[j][b][a][c]
+                          = T[j][b][c][a] = T[j][c][a][b] = T[j][c][b][a] = t;
                         --r[c];
                       }
                     --r[b];
@@ -272,7 +273,7 @@ namespace vesicle_iga
               }
             for (unsigned int j = 0; j < n_local; ++j)
               {
-                const double R = v[j] / W;
+                const double   R = v[j] / W;
                 Tensor<1, dim> Rg;
                 Tensor<2, dim> RH;
                 Tensor<3, dim> RT;
@@ -281,19 +282,18 @@ namespace vesicle_iga
                 if (order >= 2)
                   for (unsigned int a = 0; a < dim; ++a)
                     for (unsigned int b = 0; b < dim; ++b)
-                      RH[a][b] = (H[j][a][b] - Rg[a] * Wg[b] - Rg[b] * Wg[a] -
-                                  R * WH[a][b]) /
-                                 W;
+                      RH[a][b] = (H[j][a][b] - Rg[a] * Wg[b] - Rg[b] * Wg[a]
+                                  - R * WH[a][b])
+                                 / W;
                 if (order >= 3)
                   for (unsigned int a = 0; a < dim; ++a)
                     for (unsigned int b = 0; b < dim; ++b)
                       for (unsigned int c = 0; c < dim; ++c)
-                        RT[a][b][c] =
-                          (T[j][a][b][c] - RH[a][b] * Wg[c] -
-                           RH[a][c] * Wg[b] - RH[b][c] * Wg[a] -
-                           Rg[a] * WH[b][c] - Rg[b] * WH[a][c] -
-                           Rg[c] * WH[a][b] - R * WT[a][b][c]) /
-                          W;
+                        RT[a][b][c] = (T[j][a][b][c] - RH[a][b] * Wg[c]
+                                       - RH[a][c] * Wg[b] - RH[b][c] * Wg[a]
+                                       - Rg[a] * WH[b][c] - Rg[b] * WH[a][c]
+                                       - Rg[c] * WH[a][b] - R * WT[a][b][c])
+                                      / W;
                 v[j] = R;
                 g[j] = Rg;
                 H[j] = RH;
@@ -365,9 +365,10 @@ namespace vesicle_iga
                           {
                             s -= gp[i] * X3[i][a][b][c];
                             for (unsigned int k = 0; k < dim; ++k)
-                              s -= Hp[i][k] * (X2[i][a][c] * J[k][b] +
-                                               J[i][a] * X2[k][b][c] +
-                                               X2[i][a][b] * J[k][c]);
+                              s -= Hp[i][k]
+                                   * (X2[i][a][c] * J[k][b]
+                                      + J[i][a] * X2[k][b][c]
+                                      + X2[i][a][b] * J[k][c]);
                           }
                         Tr[a][b][c] = s;
                       }
@@ -379,8 +380,8 @@ namespace vesicle_iga
                         for (unsigned int a = 0; a < dim; ++a)
                           for (unsigned int b = 0; b < dim; ++b)
                             for (unsigned int c = 0; c < dim; ++c)
-                              s += Tr[a][b][c] * Jinv[a][i] * Jinv[b][k] *
-                                   Jinv[c][l];
+                              s += Tr[a][b][c] * Jinv[a][i] * Jinv[b][k]
+                                   * Jinv[c][l];
                         Tp[i][k][l] = s;
                       }
                 thirds[q * n_local + j] = Tp;
@@ -399,7 +400,7 @@ namespace vesicle_iga
         double measure = std::abs(detJ);
         if (face >= 0)
           {
-            const unsigned int fd = face / 2;
+            const unsigned int fd   = face / 2;
             const double       sign = (face % 2) ? 1. : -1.;
             Tensor<1, dim>     n;
             for (unsigned int i = 0; i < dim; ++i)

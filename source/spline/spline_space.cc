@@ -207,9 +207,8 @@ namespace vesicle_iga
   SplineSpace<dim>::operator==(const SplineSpace<dim> &o) const
   {
     for (unsigned int d = 0; d < dim; ++d)
-      if (kv[d].knots() != o.kv[d].knots() ||
-          kv[d].degree() != o.kv[d].degree() ||
-          kv[d].is_periodic() != o.kv[d].is_periodic())
+      if (kv[d].knots() != o.kv[d].knots() || kv[d].degree() != o.kv[d].degree()
+          || kv[d].is_periodic() != o.kv[d].is_periodic())
         return false;
     return true;
   }
@@ -243,7 +242,7 @@ namespace vesicle_iga
                                  const std::vector<double> &values,
                                  const unsigned int         nc)
   {
-    std::vector<double> c = values;
+    std::vector<double> c      = values;
     unsigned int        stride = nc;
     for (unsigned int d = 0; d < dim; ++d)
       {

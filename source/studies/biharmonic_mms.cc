@@ -80,29 +80,29 @@ namespace vesicle_iga
       const ScalarFunctionFromFunctionObject<dim> laplacian(
         [&](const Point<dim> &x) { return exact.laplacian(x); });
       const BoundarySelection<dim> all("all", "Boundary condition");
-      const bool clamped = (boundary_condition == "clamped");
+      const bool                   clamped = (boundary_condition == "clamped");
 
-      TimerOutput timer(context.communicator,
+      TimerOutput           timer(context.communicator,
                         context.pcout,
                         context.print_details ? TimerOutput::summary :
-                                                TimerOutput::never,
+                                                          TimerOutput::never,
                         TimerOutput::wall_times);
       ConvergenceStudyTable table(dim, {"L2", "H1", "H2"});
       for (const unsigned int p : convergence.degrees)
         for (unsigned int r = 0; r <= convergence.refinements; ++r)
           {
-            const SplineSpace<dim> space =
-              box.make_space<dim>(p, convergence.continuity).h_refined(r);
+            const SplineSpace<dim> space
+              = box.make_space<dim>(p, convergence.continuity).h_refined(r);
             LinearSplineProblem<dim> problem(context.communicator,
                                              space,
                                              nullptr,
                                              1);
             if (clamped)
               {
-                const auto dudn = [&](const Point<dim>     &x,
-                                      const Tensor<1, dim> &n) {
-                  return exact.gradient(x) * n;
-                };
+                const auto dudn
+                  = [&](const Point<dim> &x, const Tensor<1, dim> &n) {
+                      return exact.gradient(x) * n;
+                    };
                 add_clamped_constraints<dim>(
                   problem.dofs(), all, exact, dudn, problem.constraints());
               }
@@ -134,14 +134,15 @@ namespace vesicle_iga
                   const std::vector<std::vector<double>> &c,
                   std::vector<double>                    &sums) {
                 const Point<dim> &x = v.quadrature_point(q);
-                sums[0] += std::pow(v.value(c[0], q) - exact.value(x), 2) *
-                           v.JxW(q);
-                sums[1] +=
-                  (v.gradient(c[0], q) - exact.gradient(x)).norm_square() *
-                  v.JxW(q);
-                sums[2] += (v.hessian(c[0], q) - Tensor<2, dim>(exact.hessian(x)))
-                             .norm_square() *
-                           v.JxW(q);
+                sums[0]
+                  += std::pow(v.value(c[0], q) - exact.value(x), 2) * v.JxW(q);
+                sums[1]
+                  += (v.gradient(c[0], q) - exact.gradient(x)).norm_square()
+                     * v.JxW(q);
+                sums[2]
+                  += (v.hessian(c[0], q) - Tensor<2, dim>(exact.hessian(x)))
+                       .norm_square()
+                     * v.JxW(q);
               });
             table.add_row(p,
                           space.n_elements(),

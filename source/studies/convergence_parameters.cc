@@ -40,8 +40,7 @@ namespace vesicle_iga
 
 
   void
-  ConvergenceParameters::parse(ParameterHandler  &prm,
-                               const unsigned int min_k)
+  ConvergenceParameters::parse(ParameterHandler &prm, const unsigned int min_k)
   {
     degrees.clear();
     for (const auto &s : Utilities::split_string_list(prm.get("Degrees")))
@@ -58,18 +57,18 @@ namespace vesicle_iga
         check_input(k <= int(p) - 1,
                     "Continuity",
                     std::to_string(continuity),
-                    "a continuity below every degree (k <= p-1 = " +
-                      std::to_string(int(p) - 1) + " for p = " +
-                      std::to_string(p) + "), or -1 for k = p-1");
+                    "a continuity below every degree (k <= p-1 = "
+                      + std::to_string(int(p) - 1) + " for p = "
+                      + std::to_string(p) + "), or -1 for k = p-1");
         check_input(k >= int(min_k),
                     min_k > 0 && continuity < 0 ? "Degrees" : "Continuity",
                     min_k > 0 && continuity < 0 ? std::to_string(p) :
                                                   std::to_string(continuity),
-                    "a space of at least C^" + std::to_string(min_k) +
-                      " for this equation (primal form of a fourth-order "
-                      "problem needs H^2-conforming splines): degree p >= " +
-                      std::to_string(min_k + 1) + " and continuity k >= " +
-                      std::to_string(min_k));
+                    "a space of at least C^" + std::to_string(min_k)
+                      + " for this equation (primal form of a fourth-order "
+                        "problem needs H^2-conforming splines): degree p >= "
+                      + std::to_string(min_k + 1)
+                      + " and continuity k >= " + std::to_string(min_k));
       }
   }
 } // namespace vesicle_iga

@@ -40,15 +40,18 @@ namespace vesicle_iga
   KirschSolution::stress(const Point<2> &x) const
   {
     // (P3)
-    const double r = x.norm(), th = std::atan2(x[1], x[0]);
-    const double a2 = R * R / (r * r), a4 = a2 * a2;
+    const double          r = x.norm(), th = std::atan2(x[1], x[0]);
+    const double          a2 = R * R / (r * r), a4 = a2 * a2;
     SymmetricTensor<2, 2> s;
-    s[0][0] = Tx * (1 - a2 * (1.5 * std::cos(2 * th) + std::cos(4 * th)) +
-                    1.5 * a4 * std::cos(4 * th));
-    s[1][1] = Tx * (-a2 * (0.5 * std::cos(2 * th) - std::cos(4 * th)) -
-                    1.5 * a4 * std::cos(4 * th));
-    s[0][1] = Tx * (-a2 * (0.5 * std::sin(2 * th) + std::sin(4 * th)) +
-                    1.5 * a4 * std::sin(4 * th));
+    s[0][0] = Tx
+              * (1 - a2 * (1.5 * std::cos(2 * th) + std::cos(4 * th))
+                 + 1.5 * a4 * std::cos(4 * th));
+    s[1][1] = Tx
+              * (-a2 * (0.5 * std::cos(2 * th) - std::cos(4 * th))
+                 - 1.5 * a4 * std::cos(4 * th));
+    s[0][1] = Tx
+              * (-a2 * (0.5 * std::sin(2 * th) + std::sin(4 * th))
+                 + 1.5 * a4 * std::sin(4 * th));
     return s;
   }
 
@@ -59,14 +62,16 @@ namespace vesicle_iga
     // (P4)
     const double r = x.norm(), th = std::atan2(x[1], x[0]);
     const double mu = E / (2 * (1 + nu)), kappa = (3 - nu) / (1 + nu);
-    const double f  = R * Tx / (8 * mu);
+    const double f = R * Tx / (8 * mu);
     Tensor<1, 2> u;
-    u[0] = f * (r / R * (kappa + 1) * std::cos(th) +
-                2 * R / r * ((1 + kappa) * std::cos(th) + std::cos(3 * th)) -
-                2 * std::pow(R / r, 3) * std::cos(3 * th));
-    u[1] = f * (r / R * (kappa - 3) * std::sin(th) +
-                2 * R / r * ((1 - kappa) * std::sin(th) + std::sin(3 * th)) -
-                2 * std::pow(R / r, 3) * std::sin(3 * th));
+    u[0] = f
+           * (r / R * (kappa + 1) * std::cos(th)
+              + 2 * R / r * ((1 + kappa) * std::cos(th) + std::cos(3 * th))
+              - 2 * std::pow(R / r, 3) * std::cos(3 * th));
+    u[1] = f
+           * (r / R * (kappa - 3) * std::sin(th)
+              + 2 * R / r * ((1 - kappa) * std::sin(th) + std::sin(3 * th))
+              - 2 * std::pow(R / r, 3) * std::sin(3 * th));
     return u;
   }
 
@@ -76,24 +81,24 @@ namespace vesicle_iga
   {
     // (P2): xi along the hole (4 functions, C^1 at xi = 1/2), eta from the
     // hole to the outer edge (3 functions).
-    const KnotVector       xi(2, {0., 0.5, 1.}, {1});
-    const KnotVector       eta(2, {0., 1.});
-    const SplineSpace<2>   space(std::array<KnotVector, 2>{{xi, eta}});
-    const double           ws = 0.5 * (1 + 1 / std::sqrt(2.));
-    const double           s2 = std::sqrt(2.);
-    std::vector<Point<2>>  P  = {{-1, 0},
-                                 {-1, s2 - 1},
-                                 {1 - s2, 1},
-                                 {0, 1},
-                                 {-2.5, 0},
-                                 {-2.5, 0.75},
-                                 {-0.75, 2.5},
-                                 {0, 2.5},
-                                 {-4, 0},
-                                 {-4, 4},
-                                 {-4, 4},
-                                 {0, 4}};
-    std::vector<double> w = {1, ws, ws, 1, 1, 1, 1, 1, 1, 1, 1, 1};
+    const KnotVector      xi(2, {0., 0.5, 1.}, {1});
+    const KnotVector      eta(2, {0., 1.});
+    const SplineSpace<2>  space(std::array<KnotVector, 2>{{xi, eta}});
+    const double          ws = 0.5 * (1 + 1 / std::sqrt(2.));
+    const double          s2 = std::sqrt(2.);
+    std::vector<Point<2>> P  = {{-1, 0},
+                                {-1, s2 - 1},
+                                {1 - s2, 1},
+                                {0, 1},
+                                {-2.5, 0},
+                                {-2.5, 0.75},
+                                {-0.75, 2.5},
+                                {0, 2.5},
+                                {-4, 0},
+                                {-4, 4},
+                                {-4, 4},
+                                {0, 4}};
+    std::vector<double>   w  = {1, ws, ws, 1, 1, 1, 1, 1, 1, 1, 1, 1};
     return std::make_shared<const NurbsGeometry<2>>(space, P, w);
   }
 
@@ -146,25 +151,25 @@ namespace vesicle_iga
     void
     PlateWithHole::run()
     {
-      const KirschSolution exact(E, nu, Tx, 1.);
-      const auto           coarse = make_plate_with_hole_geometry();
+      const KirschSolution          exact(E, nu, Tx, 1.);
+      const auto                    coarse = make_plate_with_hole_geometry();
       const LinearElasticityTerm<2> elasticity(E, nu, true);
       // xi = 0 is y = 0 (u_y = 0), xi = 1 is x = 0 (u_x = 0), eta = 1 the
       // outer edges with the exact traction, eta = 0 the free hole.
-      const BoundarySelection<2> symmetry_y("x-min", "symmetry");
-      const BoundarySelection<2> symmetry_x("x-max", "symmetry");
-      const BoundarySelection<2> outer("y-max", "traction");
-      const TractionTerm<2>      traction(outer,
+      const BoundarySelection<2>       symmetry_y("x-min", "symmetry");
+      const BoundarySelection<2>       symmetry_x("x-max", "symmetry");
+      const BoundarySelection<2>       outer("y-max", "traction");
+      const TractionTerm<2>            traction(outer,
                                      [&](const Point<2>     &x,
                                          const Tensor<1, 2> &n) {
                                        return exact.stress(x) * n;
                                      });
       const Functions::ZeroFunction<2> zero(2);
 
-      TimerOutput timer(context.communicator,
+      TimerOutput           timer(context.communicator,
                         context.pcout,
                         context.print_details ? TimerOutput::summary :
-                                                TimerOutput::never,
+                                                          TimerOutput::never,
                         TimerOutput::wall_times);
       ConvergenceStudyTable table(
         2, {"energy", "stress_L2", "energy_relative", "stress_L2_relative"});
@@ -177,7 +182,7 @@ namespace vesicle_iga
                         "p >= 2 (the exact geometry is quadratic NURBS)");
             SplineSpace<2> space = coarse->space().degree_elevated(p - 2);
 
-            space = space.h_refined(r);
+            space               = space.h_refined(r);
             const auto geometry = std::make_shared<const NurbsGeometry<2>>(
               coarse->refined_to(space));
             LinearSplineProblem<2> problem(context.communicator,
@@ -226,14 +231,14 @@ namespace vesicle_iga
                 const auto s_h     = elasticity.stress(e_h);
                 // Exact strain from the exact stress (plane stress
                 // compliance), so that no displacement derivative is needed.
-                const double tr = trace(s_exact);
-                const SymmetricTensor<2, 2> e_exact =
-                  ((1 + nu) * s_exact - nu * tr * unit_symmetric_tensor<2>()) /
-                  E;
+                const double                tr = trace(s_exact);
+                const SymmetricTensor<2, 2> e_exact
+                  = ((1 + nu) * s_exact - nu * tr * unit_symmetric_tensor<2>())
+                    / E;
                 const auto de = e_exact - e_h;
                 sums[0] += elasticity.energy_product(de) * v.JxW(q);
-                sums[1] += (s_exact - s_h).norm() * (s_exact - s_h).norm() *
-                           v.JxW(q);
+                sums[1]
+                  += (s_exact - s_h).norm() * (s_exact - s_h).norm() * v.JxW(q);
                 sums[2] += elasticity.energy_product(e_exact) * v.JxW(q);
                 sums[3] += s_exact.norm() * s_exact.norm() * v.JxW(q);
               });
@@ -260,23 +265,27 @@ namespace vesicle_iga
                 writer.add_components({"u_x", "u_y"});
                 for (const auto &[name, a, b] :
                      std::vector<std::tuple<std::string, int, int>>{
-                       {"sigma_xx", 0, 0}, {"sigma_yy", 1, 1}, {"sigma_xy", 0, 1}})
+                       {"sigma_xx", 0, 0},
+                       {"sigma_yy", 1, 1},
+                       {"sigma_xy", 0, 1}})
                   {
                     writer.add_quantity(
                       name,
-                      [&, a = a, b = b](const SplineCellValues<2> &v,
-                                        const unsigned int         q,
-                                        const std::vector<std::vector<double>>
-                                          &c) {
+                      [&,
+                       a = a,
+                       b = b](const SplineCellValues<2>              &v,
+                              const unsigned int                      q,
+                              const std::vector<std::vector<double>> &c) {
                         return elasticity.stress(strain(v, q, c))[a][b];
                       },
                       1);
                     writer.add_quantity(
                       name + "_exact",
-                      [&, a = a, b = b](const SplineCellValues<2> &v,
-                                        const unsigned int         q,
-                                        const std::vector<std::vector<double>>
-                                          &) {
+                      [&,
+                       a = a,
+                       b = b](const SplineCellValues<2> &v,
+                              const unsigned int         q,
+                              const std::vector<std::vector<double>> &) {
                         return exact.stress(v.quadrature_point(q))[a][b];
                       });
                   }
@@ -301,32 +310,32 @@ namespace vesicle_iga
   StudyDescription
   plate_with_hole_description()
   {
-    return {
-      "plate-with-hole",
-      "Spec Part P: plane-stress plate with a circular hole on the exact "
-      "NURBS geometry, energy-norm and stress errors against Kirsch's "
-      "solution for p-elevated and h-refined spaces.",
-      [](ParameterHandler &prm) {
-        prm.enter_subsection(section);
-        ConvergenceParameters::declare(prm, "2,3,4,5,6", "5");
-        LinearSolverParameters::declare(prm, "direct");
-        prm.declare_entry("Young modulus",
-                          "1e5",
-                          Patterns::Double(0),
-                          "E of spec section 5.3.");
-        prm.declare_entry("Poisson ratio",
-                          "0.3",
-                          Patterns::Double(),
-                          "nu of spec section 5.3, -1 < nu < 0.5.");
-        prm.declare_entry("Traction",
-                          "10",
-                          Patterns::Double(),
-                          "Remote uniaxial traction T_x (spec section 7, "
-                          "item 49).");
-        prm.leave_subsection();
-      },
-      [](ParameterHandler &prm, RunContext &context) -> std::unique_ptr<Study> {
-        return std::make_unique<PlateWithHole>(prm, context);
-      }};
+    return {"plate-with-hole",
+            "Spec Part P: plane-stress plate with a circular hole on the exact "
+            "NURBS geometry, energy-norm and stress errors against Kirsch's "
+            "solution for p-elevated and h-refined spaces.",
+            [](ParameterHandler &prm) {
+              prm.enter_subsection(section);
+              ConvergenceParameters::declare(prm, "2,3,4,5,6", "5");
+              LinearSolverParameters::declare(prm, "direct");
+              prm.declare_entry("Young modulus",
+                                "1e5",
+                                Patterns::Double(0),
+                                "E of spec section 5.3.");
+              prm.declare_entry("Poisson ratio",
+                                "0.3",
+                                Patterns::Double(),
+                                "nu of spec section 5.3, -1 < nu < 0.5.");
+              prm.declare_entry("Traction",
+                                "10",
+                                Patterns::Double(),
+                                "Remote uniaxial traction T_x (spec section 7, "
+                                "item 49).");
+              prm.leave_subsection();
+            },
+            [](ParameterHandler &prm,
+               RunContext       &context) -> std::unique_ptr<Study> {
+              return std::make_unique<PlateWithHole>(prm, context);
+            }};
   }
 } // namespace vesicle_iga

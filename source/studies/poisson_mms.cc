@@ -82,33 +82,36 @@ namespace vesicle_iga
           phase[d] = box.periodic[d] ? -2 * M_PI * box.lower[d] / L + 0.4 :
                                        0.4 + 0.3 * d - k[d] * box.lower[d];
         }
-      const ProductSineSolution<dim> exact(k, phase);
+      const ProductSineSolution<dim>              exact(k, phase);
       const ScalarFunctionFromFunctionObject<dim> f(
         [&](const Point<dim> &x) { return -exact.laplacian(x); });
       const BoundarySelection<dim> strong(strong_text,
                                           "Strong Dirichlet boundaries");
       const BoundarySelection<dim> nitsche(nitsche_text, "Nitsche boundaries");
 
-      TimerOutput timer(context.communicator,
+      TimerOutput           timer(context.communicator,
                         context.pcout,
                         context.print_details ? TimerOutput::summary :
-                                                TimerOutput::never,
+                                                          TimerOutput::never,
                         TimerOutput::wall_times);
       ConvergenceStudyTable table(dim, {"L2", "H1"});
       for (const unsigned int p : convergence.degrees)
         for (unsigned int r = 0; r <= convergence.refinements; ++r)
           {
-            const SplineSpace<dim> space =
-              box.make_space<dim>(p, convergence.continuity).h_refined(r);
+            const SplineSpace<dim> space
+              = box.make_space<dim>(p, convergence.continuity).h_refined(r);
             LinearSplineProblem<dim> problem(context.communicator,
                                              space,
                                              nullptr,
                                              1);
-            add_strong_dirichlet_constraints<dim>(
-              problem.dofs(), nullptr, strong, exact, {true},
-              problem.constraints());
-            const double penalty =
-              nitsche_constant > 0 ? nitsche_constant : 5. * (p + 1);
+            add_strong_dirichlet_constraints<dim>(problem.dofs(),
+                                                  nullptr,
+                                                  strong,
+                                                  exact,
+                                                  {true},
+                                                  problem.constraints());
+            const double penalty
+              = nitsche_constant > 0 ? nitsche_constant : 5. * (p + 1);
             const LaplaceTerm<dim>          laplace(f);
             const NitscheDirichletTerm<dim> weak(nitsche, exact, penalty);
             const NeumannTerm<dim>          neumann(
@@ -134,11 +137,11 @@ namespace vesicle_iga
                   const std::vector<std::vector<double>> &c,
                   std::vector<double>                    &sums) {
                 const Point<dim> &x = v.quadrature_point(q);
-                sums[0] += std::pow(v.value(c[0], q) - exact.value(x), 2) *
-                           v.JxW(q);
-                sums[1] +=
-                  (v.gradient(c[0], q) - exact.gradient(x)).norm_square() *
-                  v.JxW(q);
+                sums[0]
+                  += std::pow(v.value(c[0], q) - exact.value(x), 2) * v.JxW(q);
+                sums[1]
+                  += (v.gradient(c[0], q) - exact.gradient(x)).norm_square()
+                     * v.JxW(q);
               });
             const double h = problem.mesh().max_cell_diameter();
             table.add_row(p,
@@ -156,7 +159,7 @@ namespace vesicle_iga
 
             if (convergence.write_vtu && r == convergence.refinements)
               {
-                TimerOutput::Scope        t(timer, "output");
+                TimerOutput::Scope     t(timer, "output");
                 SplineFieldWriter<dim> writer(problem.dofs(), nullptr);
                 writer.add_components({"u"});
                 writer.add_quantity(
@@ -164,8 +167,8 @@ namespace vesicle_iga
                   [&](const SplineCellValues<dim>            &v,
                       const unsigned int                      q,
                       const std::vector<std::vector<double>> &c) {
-                    return v.value(c[0], q) -
-                           exact.value(v.quadrature_point(q));
+                    return v.value(c[0], q)
+                           - exact.value(v.quadrature_point(q));
                   });
                 writer.write(problem.solution(),
                              context.output_directory,

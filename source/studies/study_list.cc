@@ -14,10 +14,10 @@ namespace vesicle_iga
   const std::vector<StudyDescription> &
   available_studies()
   {
-    static const std::vector<StudyDescription> studies = {
-      poisson_mms_description(),
-      biharmonic_mms_description(),
-      plate_with_hole_description()};
+    static const std::vector<StudyDescription> studies
+      = {poisson_mms_description(),
+         biharmonic_mms_description(),
+         plate_with_hole_description()};
     return studies;
   }
 } // namespace vesicle_iga

@@ -39,14 +39,15 @@ namespace vesicle_iga
               {
                 const Tensor<1, dim> &gj = v.shape_grad(j, q);
                 // Block (a, b) of the element matrix for components a, b:
-                // lambda d_a v d_b u + mu (d_b v d_a u + delta_ab grad v.grad u)
+                // lambda d_a v d_b u + mu (d_b v d_a u + delta_ab grad v.grad
+                // u)
                 const double gg = gi * gj;
                 for (unsigned int a = 0; a < dim; ++a)
                   for (unsigned int c = 0; c < dim; ++c)
-                    A(a * n + i, c * n + j) +=
-                      (lambda * gi[a] * gj[c] + mu * gi[c] * gj[a] +
-                       (a == c ? mu * gg : 0.)) *
-                      JxW;
+                    A(a * n + i, c * n + j)
+                      += (lambda * gi[a] * gj[c] + mu * gi[c] * gj[a]
+                          + (a == c ? mu * gg : 0.))
+                         * JxW;
               }
           }
       }
@@ -65,8 +66,8 @@ namespace vesicle_iga
       {
         if (!selection.contains(face, v.quadrature_point(q)))
           continue;
-        const Tensor<1, dim> t =
-          traction(v.quadrature_point(q), v.normal_vector(q));
+        const Tensor<1, dim> t
+          = traction(v.quadrature_point(q), v.normal_vector(q));
         for (unsigned int a = 0; a < dim; ++a)
           for (unsigned int i = 0; i < n; ++i)
             b(a * n + i) += v.shape_value(i, q) * t[a] * v.JxW(q);

@@ -14,46 +14,43 @@
 int
 main(int argc, char *argv[])
 {
-  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  std::ofstream                            out("output");
-  const std::vector<std::pair<std::string, std::string>> cases = {
-    {"unknown parameter",
-     "set Study = poisson-mms\nset Degreez = 3\n"},
-    {"biharmonic on C^0 (degree 1)",
-     "set Study = biharmonic-mms\nsubsection Biharmonic MMS\n"
-     "set Degrees = 1\nend\n"},
-    {"biharmonic with continuity 0",
-     "set Study = biharmonic-mms\nsubsection Biharmonic MMS\n"
-     "set Degrees = 3\nset Continuity = 0\nend\n"},
-    {"continuity not below the degree",
-     "set Study = poisson-mms\nsubsection Poisson MMS\n"
-     "set Degrees = 2\nset Continuity = 2\nend\n"},
-    {"empty breakpoint list",
-     "set Study = poisson-mms\nsubsection Poisson MMS\nset Degrees = 2\n"
-     "subsection Mesh\nset Breakpoints x = 0.5\nend\nend\n"},
-    {"decreasing breakpoints",
-     "set Study = poisson-mms\nsubsection Poisson MMS\nset Degrees = 2\n"
-     "subsection Mesh\nset Breakpoints x = 0, 0.5, 0.4, 1\nend\nend\n"},
-    {"malformed boundary selection",
-     "set Study = poisson-mms\nsubsection Poisson MMS\n"
-     "set Nitsche boundaries = left\nend\n"},
-    {"plate in 3D",
-     "set Study = plate-with-hole\nset Dimension = 3\n"},
-    {"unknown study", "set Study = nonsense\n"}};
+  dealii::Utilities::MPI::MPI_InitFinalize               mpi(argc, argv, 1);
+  std::ofstream                                          out("output");
+  const std::vector<std::pair<std::string, std::string>> cases
+    = {{"unknown parameter", "set Study = poisson-mms\nset Degreez = 3\n"},
+       {"biharmonic on C^0 (degree 1)",
+        "set Study = biharmonic-mms\nsubsection Biharmonic MMS\n"
+        "set Degrees = 1\nend\n"},
+       {"biharmonic with continuity 0",
+        "set Study = biharmonic-mms\nsubsection Biharmonic MMS\n"
+        "set Degrees = 3\nset Continuity = 0\nend\n"},
+       {"continuity not below the degree",
+        "set Study = poisson-mms\nsubsection Poisson MMS\n"
+        "set Degrees = 2\nset Continuity = 2\nend\n"},
+       {"empty breakpoint list",
+        "set Study = poisson-mms\nsubsection Poisson MMS\nset Degrees = 2\n"
+        "subsection Mesh\nset Breakpoints x = 0.5\nend\nend\n"},
+       {"decreasing breakpoints",
+        "set Study = poisson-mms\nsubsection Poisson MMS\nset Degrees = 2\n"
+        "subsection Mesh\nset Breakpoints x = 0, 0.5, 0.4, 1\nend\nend\n"},
+       {"malformed boundary selection",
+        "set Study = poisson-mms\nsubsection Poisson MMS\n"
+        "set Nitsche boundaries = left\nend\n"},
+       {"plate in 3D", "set Study = plate-with-hole\nset Dimension = 3\n"},
+       {"unknown study", "set Study = nonsense\n"}};
   for (const auto &[name, text] : cases)
     {
       std::ofstream("case.prm") << "set Output directory = results\n" << text;
       std::ostringstream captured;
-      auto *old = std::cerr.rdbuf(captured.rdbuf());
-      const int code = vesicle_iga::run_program({"case.prm"});
+      auto              *old  = std::cerr.rdbuf(captured.rdbuf());
+      const int          code = vesicle_iga::run_program({"case.prm"});
       std::cerr.rdbuf(old);
       out << "case: " << name << "\n  exit code " << code << "\n  "
           << captured.str();
     }
   std::ostringstream captured;
-  auto *old = std::cerr.rdbuf(captured.rdbuf());
-  const int code = vesicle_iga::run_program({"no-such-file.prm"});
+  auto              *old  = std::cerr.rdbuf(captured.rdbuf());
+  const int          code = vesicle_iga::run_program({"no-such-file.prm"});
   std::cerr.rdbuf(old);
-  out << "case: missing file\n  exit code " << code << "\n  "
-      << captured.str();
+  out << "case: missing file\n  exit code " << code << "\n  " << captured.str();
 }

@@ -41,8 +41,8 @@ cox_de_boor(const std::vector<double> &t, int i, int p, double x)
   if (t[i + p] > t[i])
     a = (x - t[i]) / (t[i + p] - t[i]) * cox_de_boor(t, i, p - 1, x);
   if (t[i + p + 1] > t[i + 1])
-    b = (t[i + p + 1] - x) / (t[i + p + 1] - t[i + 1]) *
-        cox_de_boor(t, i + 1, p - 1, x);
+    b = (t[i + p + 1] - x) / (t[i + p + 1] - t[i + 1])
+        * cox_de_boor(t, i + 1, p - 1, x);
   return a + b;
 }
 
@@ -62,10 +62,10 @@ void
 check_1d_open(const KnotVector &kv, const std::string &name)
 {
   // Values against Cox-de Boor at points inside every element.
-  const SplineSpace<1>  space(std::array<KnotVector, 1>{{kv}});
-  SplineCellValues<1>   v(space, nullptr, QGauss<1>(kv.degree() + 2), 3);
-  double                err_value = 0, err_d1 = 0, pu = 0, negative = 0;
-  const auto           &t = kv.knots();
+  const SplineSpace<1> space(std::array<KnotVector, 1>{{kv}});
+  SplineCellValues<1>  v(space, nullptr, QGauss<1>(kv.degree() + 2), 3);
+  double               err_value = 0, err_d1 = 0, pu = 0, negative = 0;
+  const auto          &t = kv.knots();
   for (unsigned int e = 0; e < kv.n_elements(); ++e)
     {
       v.reinit(e);
@@ -78,16 +78,16 @@ check_1d_open(const KnotVector &kv, const std::string &name)
               const int i = v.basis_indices()[j];
               sum += v.shape_value(j, q);
               negative = std::min(negative, v.shape_value(j, q));
-              err_value =
-                std::max(err_value,
-                         std::abs(v.shape_value(j, q) -
-                                  cox_de_boor(t, i, kv.degree(), x)));
-              const double fd = (cox_de_boor(t, i, kv.degree(), x + h) -
-                                 cox_de_boor(t, i, kv.degree(), x - h)) /
-                                (2 * h);
+              err_value
+                = std::max(err_value,
+                           std::abs(v.shape_value(j, q)
+                                    - cox_de_boor(t, i, kv.degree(), x)));
+              const double fd = (cox_de_boor(t, i, kv.degree(), x + h)
+                                 - cox_de_boor(t, i, kv.degree(), x - h))
+                                / (2 * h);
               err_d1 = std::max(err_d1,
-                                std::abs(v.shape_grad(j, q)[0] - fd) /
-                                  (1 + std::abs(fd)));
+                                std::abs(v.shape_grad(j, q)[0] - fd)
+                                  / (1 + std::abs(fd)));
             }
           pu = std::max(pu, std::abs(sum - 1));
         }
@@ -124,9 +124,9 @@ check_continuity(const SplineSpace<dim> &space, const std::string &name)
           const int k = (m[d] + 1 == kv.n_elements()) ?
                           kv.seam_continuity() :
                           kv.interior_continuity()[m[d]];
-          min_k = std::min<unsigned int>(min_k, k);
-          auto mn = m;
-          mn[d]   = (m[d] + 1) % kv.n_elements();
+          min_k       = std::min<unsigned int>(min_k, k);
+          auto mn     = m;
+          mn[d]       = (m[d] + 1) % kv.n_elements();
           a.reinit_face(e, 2 * d + 1);
           b.reinit_face(space.element_index(mn), 2 * d);
           std::vector<double> ca, cb;
@@ -155,10 +155,8 @@ check_continuity(const SplineSpace<dim> &space, const std::string &name)
                                                   (ga - gb).norm(),
                                                   (ha - hb).norm(),
                                                   (ta - tb).norm()};
-              const std::array<double, 4> scale = {std::abs(va),
-                                                   ga.norm(),
-                                                   ha.norm(),
-                                                   ta.norm()};
+              const std::array<double, 4> scale
+                = {std::abs(va), ga.norm(), ha.norm(), ta.norm()};
               for (int r = 0; r < 4; ++r)
                 if (r <= k)
                   {
@@ -212,8 +210,8 @@ main()
 
   // Partition of unity in 2D with a periodic direction, at quadrature points.
   {
-    const KnotVector z = KnotVector::uniform(3, 5, 0, 1, -1, true);
-    const KnotVector x(3, {0, 0.3, 0.5, 1.0}, {2, 1});
+    const KnotVector     z = KnotVector::uniform(3, 5, 0, 1, -1, true);
+    const KnotVector     x(3, {0, 0.3, 0.5, 1.0}, {2, 1});
     const SplineSpace<2> s(std::array<KnotVector, 2>{{z, x}});
     SplineCellValues<2>  v(s, nullptr, QGauss<1>(4), 1);
     double               pu = 0, g = 0;
@@ -222,8 +220,8 @@ main()
         v.reinit(e);
         for (unsigned int q = 0; q < v.n_quadrature_points(); ++q)
           {
-            double         sum = 0;
-            Tensor<1, 2>   gs;
+            double       sum = 0;
+            Tensor<1, 2> gs;
             for (unsigned int j = 0; j < v.n_basis_per_element(); ++j)
               {
                 sum += v.shape_value(j, q);

@@ -13,11 +13,10 @@
 
 #include <deal.II/base/quadrature_lib.h>
 
+#include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/fe/fe_values.h>
-
-#include <deal.II/dofs/dof_handler.h>
 
 #include <vesicle_iga/assembly/assembler.h>
 #include <vesicle_iga/io/spline_output.h>
@@ -41,7 +40,7 @@ main(int argc, char *argv[])
   std::ofstream out(Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0 ?
                       "output" :
                       "/dev/null");
-  const auto                       coarse = make_plate_with_hole_geometry();
+  const auto    coarse = make_plate_with_hole_geometry();
 
   double circle = 0, left = 0, top = 0;
   for (unsigned int i = 0; i <= 1000; ++i)
@@ -56,11 +55,11 @@ main(int argc, char *argv[])
   out << "hole edge on the unit circle: " << ok(circle)
       << "; outer edges on x=-4: " << ok(left) << ", y=4: " << ok(top) << "\n";
 
-  const std::vector<std::pair<std::string, SplineSpace<2>>> spaces = {
-    {"h-refined x3", coarse->space().h_refined(3)},
-    {"p-elevated +3", coarse->space().degree_elevated(3)},
-    {"k-refined (+2, then h x2)",
-     coarse->space().degree_elevated(2).h_refined(2)}};
+  const std::vector<std::pair<std::string, SplineSpace<2>>> spaces
+    = {{"h-refined x3", coarse->space().h_refined(3)},
+       {"p-elevated +3", coarse->space().degree_elevated(3)},
+       {"k-refined (+2, then h x2)",
+        coarse->space().degree_elevated(2).h_refined(2)}};
   for (const auto &[name, space] : spaces)
     {
       const NurbsGeometry<2> fine = coarse->refined_to(space);
@@ -78,7 +77,7 @@ main(int argc, char *argv[])
                             std::make_shared<NurbsGeometry<2>>(fine),
                             QGauss<1>(4),
                             2);
-      double pu = 0, id = 0, hess = 0;
+      double              pu = 0, id = 0, hess = 0;
       for (unsigned int e = 0; e < space.n_elements(); ++e)
         {
           v.reinit(e);
@@ -99,17 +98,17 @@ main(int argc, char *argv[])
             }
         }
       out << "  rational basis: |sum-1| " << ok(pu)
-          << ", grad of x = I: " << ok(id) << ", Hessian of x = 0: "
-          << ok(hess * 1e-3) << "\n";
+          << ", grad of x = I: " << ok(id)
+          << ", Hessian of x = 0: " << ok(hess * 1e-3) << "\n";
     }
 
   // Exact conversion of a B-spline field on a box into FE_Q(p).
   for (const unsigned int p : {2u, 3u, 5u})
     {
-      const KnotVector kx(p, {0, 0.3, 0.5, 0.9, 1.4}, {int(p) - 1, 0, 1});
-      const KnotVector ky = KnotVector::uniform(p, 3, -1, 1);
-      const SplineSpace<2>     space(std::array<KnotVector, 2>{{kx, ky}});
-      LinearSplineProblem<2>   problem(MPI_COMM_WORLD, space, nullptr, 1);
+      const KnotVector       kx(p, {0, 0.3, 0.5, 0.9, 1.4}, {int(p) - 1, 0, 1});
+      const KnotVector       ky = KnotVector::uniform(p, 3, -1, 1);
+      const SplineSpace<2>   space(std::array<KnotVector, 2>{{kx, ky}});
+      LinearSplineProblem<2> problem(MPI_COMM_WORLD, space, nullptr, 1);
       TrilinosWrappers::MPI::Vector c(problem.dofs().locally_owned_dofs(),
                                       problem.dofs().locally_relevant_dofs(),
                                       MPI_COMM_WORLD);
@@ -127,8 +126,8 @@ main(int argc, char *argv[])
         problem.dofs(),
         nullptr,
         c,
-        {[](const SplineCellValues<2> &v,
-            const unsigned int          q,
+        {[](const SplineCellValues<2>              &v,
+            const unsigned int                      q,
             const std::vector<std::vector<double>> &cc) {
           return v.value(cc[0], q);
         }},
@@ -137,12 +136,12 @@ main(int argc, char *argv[])
         fe_vector);
       // Compare at points that are neither FE support points nor spline
       // interpolation points.
-      const Quadrature<2>   rule(QGauss<2>(p + 2));
-      FEValues<2>           fev(fe_dofs.get_fe(), rule, update_values);
-      SplineCellValues<2>   sv(space, nullptr, QGauss<1>(p + 2), 0);
-      std::vector<double>   fe_values(rule.size());
+      const Quadrature<2> rule(QGauss<2>(p + 2));
+      FEValues<2>         fev(fe_dofs.get_fe(), rule, update_values);
+      SplineCellValues<2> sv(space, nullptr, QGauss<1>(p + 2), 0);
+      std::vector<double> fe_values(rule.size());
       std::vector<std::vector<double>> cc;
-      double                err = 0;
+      double                           err = 0;
       for (const auto &cell : fe_dofs.active_cell_iterators())
         if (cell->is_locally_owned())
           {

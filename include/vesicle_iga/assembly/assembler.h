@@ -24,14 +24,13 @@ namespace vesicle_iga
    */
   template <int dim>
   void
-  assemble_linear_system(
-    const SplineDofHandler<dim>                      &dof_handler,
-    std::shared_ptr<const NurbsGeometry<dim>>         geometry,
-    const Quadrature<1>                              &quadrature_1d,
-    const std::vector<const AssemblyTerm<dim> *>     &terms,
-    const AffineConstraints<double>                  &constraints,
-    TrilinosWrappers::SparseMatrix                   &matrix,
-    TrilinosWrappers::MPI::Vector                    &rhs);
+  assemble_linear_system(const SplineDofHandler<dim>              &dof_handler,
+                         std::shared_ptr<const NurbsGeometry<dim>> geometry,
+                         const Quadrature<1> &quadrature_1d,
+                         const std::vector<const AssemblyTerm<dim> *> &terms,
+                         const AffineConstraints<double> &constraints,
+                         TrilinosWrappers::SparseMatrix  &matrix,
+                         TrilinosWrappers::MPI::Vector   &rhs);
 
   /**
    * Integrate quantities of a computed field over the locally owned
@@ -43,12 +42,12 @@ namespace vesicle_iga
   template <int dim>
   std::vector<double>
   integrate_field(
-    const SplineDofHandler<dim>              &dof_handler,
-    std::shared_ptr<const NurbsGeometry<dim>> geometry,
-    const Quadrature<1>                      &quadrature_1d,
-    const unsigned int                        derivative_order,
-    const TrilinosWrappers::MPI::Vector      &ghosted_solution,
-    const unsigned int                        n_sums,
+    const SplineDofHandler<dim>                      &dof_handler,
+    std::shared_ptr<const NurbsGeometry<dim>>         geometry,
+    const Quadrature<1>                              &quadrature_1d,
+    const unsigned int                                derivative_order,
+    const TrilinosWrappers::MPI::Vector              &ghosted_solution,
+    const unsigned int                                n_sums,
     const std::function<void(const SplineCellValues<dim> &,
                              const unsigned int,
                              const std::vector<std::vector<double>> &,

@@ -17,8 +17,8 @@ namespace vesicle_iga
     InputError(const std::string &parameter,
                const std::string &value,
                const std::string &allowed)
-      : std::runtime_error("Invalid value of parameter '" + parameter +
-                           "': '" + value + "'. Allowed: " + allowed + ".")
+      : std::runtime_error("Invalid value of parameter '" + parameter + "': '"
+                           + value + "'. Allowed: " + allowed + ".")
     {}
   };
 

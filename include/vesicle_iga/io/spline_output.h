@@ -1,9 +1,9 @@
 #pragma once
 
-#include <deal.II/dofs/dof_handler.h>
-
 #include <deal.II/lac/la_parallel_vector.h>
 #include <deal.II/lac/trilinos_vector.h>
+
+#include <deal.II/dofs/dof_handler.h>
 
 #include <vesicle_iga/parallel/spline_dof_handler.h>
 #include <vesicle_iga/spline/spline_cell_values.h>
@@ -18,10 +18,10 @@ namespace vesicle_iga
   /// A scalar quantity computed from a spline field at one point of an
   /// element (the field's local coefficients, one vector per component).
   template <int dim>
-  using PointEvaluator =
-    std::function<double(const SplineCellValues<dim> &,
-                         const unsigned int,
-                         const std::vector<std::vector<double>> &)>;
+  using PointEvaluator
+    = std::function<double(const SplineCellValues<dim> &,
+                           const unsigned int,
+                           const std::vector<std::vector<double>> &)>;
 
   /**
    * Conversion of spline quantities into a deal.II FE_Q field on the patch
@@ -36,14 +36,13 @@ namespace vesicle_iga
    */
   template <int dim>
   void
-  interpolate_to_fe_field(
-    const SplineDofHandler<dim>                &spline_dofs,
-    std::shared_ptr<const NurbsGeometry<dim>>   geometry,
-    const TrilinosWrappers::MPI::Vector        &ghosted_solution,
-    const std::vector<PointEvaluator<dim>>     &quantities,
-    const unsigned int                          derivative_order,
-    const DoFHandler<dim>                      &fe_dofs,
-    LinearAlgebra::distributed::Vector<double> &result);
+  interpolate_to_fe_field(const SplineDofHandler<dim>              &spline_dofs,
+                          std::shared_ptr<const NurbsGeometry<dim>> geometry,
+                          const TrilinosWrappers::MPI::Vector &ghosted_solution,
+                          const std::vector<PointEvaluator<dim>> &quantities,
+                          const unsigned int     derivative_order,
+                          const DoFHandler<dim> &fe_dofs,
+                          LinearAlgebra::distributed::Vector<double> &result);
 
   /**
    * Writes named quantities of a spline field as VTU/PVTU (one .vtu per
@@ -58,7 +57,7 @@ namespace vesicle_iga
                       std::shared_ptr<const NurbsGeometry<dim>> geometry);
 
     void
-    add_quantity(const std::string        &name,
+    add_quantity(const std::string         &name,
                  const PointEvaluator<dim> &evaluator,
                  const unsigned int         derivative_order = 0);
 

@@ -80,10 +80,10 @@ namespace vesicle_iga
     make_sparsity_pattern(TrilinosWrappers::SparsityPattern &sp) const;
 
   private:
-    const PatchMesh<dim>      &mesh;
-    const SplineSpace<dim>    &space;
-    const unsigned int         nc;
-    std::vector<unsigned int>  new_index;
-    IndexSet                   owned, relevant;
+    const PatchMesh<dim>     &mesh;
+    const SplineSpace<dim>   &space;
+    const unsigned int        nc;
+    std::vector<unsigned int> new_index;
+    IndexSet                  owned, relevant;
   };
 } // namespace vesicle_iga

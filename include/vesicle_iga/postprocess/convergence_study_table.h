@@ -21,15 +21,15 @@ namespace vesicle_iga
   class ConvergenceStudyTable
   {
   public:
-    ConvergenceStudyTable(const unsigned int               dim,
+    ConvergenceStudyTable(const unsigned int              dim,
                           const std::vector<std::string> &norm_names);
 
     void
-    add_row(const unsigned int          degree,
-            const unsigned int          cells,
-            const unsigned long long    dofs,
-            const double                h,
-            const std::vector<double>  &errors);
+    add_row(const unsigned int         degree,
+            const unsigned int         cells,
+            const unsigned long long   dofs,
+            const double               h,
+            const std::vector<double> &errors);
 
     void
     print(std::ostream &out) const;

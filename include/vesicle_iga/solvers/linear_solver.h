@@ -40,7 +40,7 @@ namespace vesicle_iga
 
   /// Solve A x = b (relative tolerance), then set the constrained entries.
   LinearSolveResult
-  solve_linear_system(const LinearSolverParameters     &parameters,
+  solve_linear_system(const LinearSolverParameters         &parameters,
                       const TrilinosWrappers::SparseMatrix &A,
                       TrilinosWrappers::MPI::Vector        &x,
                       const TrilinosWrappers::MPI::Vector  &b,

@@ -25,7 +25,7 @@ namespace vesicle_iga
     std::vector<bool>                periodic;
 
     static void
-    declare(ParameterHandler &prm,
+    declare(ParameterHandler  &prm,
             const std::string &default_lower,
             const std::string &default_upper,
             const std::string &default_elements);

@@ -33,12 +33,12 @@ namespace vesicle_iga
      * @p name) for an empty or non-increasing breakpoint list, a continuity
      * outside 0 <= k <= p-1, or a periodic space with too few functions.
      */
-    KnotVector(const unsigned int           degree,
-               const std::vector<double>   &breakpoints,
-               const std::vector<int>      &continuity = {},
-               const bool                   periodic   = false,
-               const int                    seam_continuity = -1,
-               const std::string           &name = "knot vector");
+    KnotVector(const unsigned int         degree,
+               const std::vector<double> &breakpoints,
+               const std::vector<int>    &continuity      = {},
+               const bool                 periodic        = false,
+               const int                  seam_continuity = -1,
+               const std::string         &name            = "knot vector");
 
     /// Open knot vector with @p n_elements equal elements on [a,b], C^k.
     static KnotVector
@@ -162,7 +162,7 @@ namespace vesicle_iga
     int                 k_seam   = 0;
 
     std::vector<double>       t;
-    std::vector<unsigned int> span;   // knot span index in t, per element
+    std::vector<unsigned int> span; // knot span index in t, per element
     int                       offset      = 0; // t-index of function 0
     unsigned int              n_functions = 0;
     std::vector<std::vector<std::array<double, 8>>> C;

@@ -152,17 +152,17 @@ namespace vesicle_iga
   private:
     struct BernsteinTable
     {
-      std::vector<double>                 points;
-      std::vector<std::vector<double>>    table; // [r][q*(p+1)+a]
+      std::vector<double>              points;
+      std::vector<std::vector<double>> table; // [r][q*(p+1)+a]
     };
     BernsteinTable
     make_table(const unsigned int d, const std::vector<double> &pts) const;
 
     void
-    compute(const unsigned int                                 element,
-            const std::array<const BernsteinTable *, dim>     &tables,
+    compute(const unsigned int                                  element,
+            const std::array<const BernsteinTable *, dim>      &tables,
             const std::array<const std::vector<double> *, dim> &weights,
-            const int                                          face);
+            const int                                           face);
 
     const SplineSpace<dim>                   &space;
     std::shared_ptr<const NurbsGeometry<dim>> geometry;
@@ -175,7 +175,7 @@ namespace vesicle_iga
     std::array<BernsteinTable, dim>                custom;
 
     unsigned int              n_local;
-    unsigned int              n_q = 0;
+    unsigned int              n_q             = 0;
     unsigned int              current_element = 0;
     std::vector<unsigned int> indices;
 

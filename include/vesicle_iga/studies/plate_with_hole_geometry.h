@@ -16,7 +16,9 @@ namespace vesicle_iga
   class KirschSolution
   {
   public:
-    KirschSolution(const double E, const double nu, const double Tx,
+    KirschSolution(const double E,
+                   const double nu,
+                   const double Tx,
                    const double R);
     SymmetricTensor<2, 2>
     stress(const Point<2> &x) const;

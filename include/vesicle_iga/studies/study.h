@@ -17,9 +17,9 @@ namespace vesicle_iga
   /// print, the communicator.
   struct RunContext
   {
-    MPI_Comm           communicator;
-    unsigned int       dimension;
-    std::string        output_directory;
+    MPI_Comm     communicator;
+    unsigned int dimension;
+    std::string  output_directory;
     /// Print iteration counts and timings (test .prm files turn this off so
     /// that outputs do not depend on the machine or the partition).
     bool               print_details;
@@ -32,15 +32,16 @@ namespace vesicle_iga
   public:
     virtual ~Study() = default;
     virtual void
-    run() = 0;
+    run()
+      = 0;
   };
 
   /// One entry of the list of studies: its .prm name, a one-line summary,
   /// its parameter declarations and its factory.
   struct StudyDescription
   {
-    std::string name;
-    std::string summary;
+    std::string                             name;
+    std::string                             summary;
     std::function<void(ParameterHandler &)> declare_parameters;
     std::function<std::unique_ptr<Study>(ParameterHandler &, RunContext &)>
       create;

@@ -65,6 +65,6 @@ namespace vesicle_iga
 
   private:
     const BoundarySelection<dim> selection;
-    const Function<dim>          &m;
+    const Function<dim>         &m;
   };
 } // namespace vesicle_iga

@@ -68,8 +68,8 @@ namespace vesicle_iga
 
   private:
     const BoundarySelection<dim> selection;
-    const Function<dim>          &g;
-    const double                  penalty;
+    const Function<dim>         &g;
+    const double                 penalty;
   };
 
   /// Natural condition of the Poisson problem: (v, q.n) where @p where

@@ -51,8 +51,9 @@ namespace vesicle_iga
   class TractionTerm : public AssemblyTerm<dim>
   {
   public:
-    using TractionFunction =
-      std::function<Tensor<1, dim>(const Point<dim> &, const Tensor<1, dim> &)>;
+    using TractionFunction
+      = std::function<Tensor<1, dim>(const Point<dim> &,
+                                     const Tensor<1, dim> &)>;
     TractionTerm(const BoundarySelection<dim> &selection, TractionFunction t)
       : selection(selection)
       , traction(t)
@@ -75,6 +76,6 @@ namespace vesicle_iga
 
   private:
     const BoundarySelection<dim> selection;
-    TractionFunction              traction;
+    TractionFunction             traction;
   };
 } // namespace vesicle_iga
