@@ -21,6 +21,13 @@ namespace vesicle_iga
                   + std::to_string(space.n_basis()) + ")");
     for (const double wi : w)
       check_input(wi > 0, "NURBS weight", std::to_string(wi), "w > 0");
+    homogeneous.resize(spline_space.n_basis() * (dim + 1));
+    for (unsigned int i = 0; i < spline_space.n_basis(); ++i)
+      {
+        for (unsigned int d = 0; d < dim; ++d)
+          homogeneous[i * (dim + 1) + d] = weights_[i] * points[i][d];
+        homogeneous[i * (dim + 1) + dim] = weights_[i];
+      }
   }
 
 
@@ -28,13 +35,6 @@ namespace vesicle_iga
   Point<dim>
   NurbsGeometry<dim>::point(const Point<dim> &xi) const
   {
-    std::vector<double> homogeneous(spline_space.n_basis() * (dim + 1));
-    for (unsigned int i = 0; i < spline_space.n_basis(); ++i)
-      {
-        for (unsigned int d = 0; d < dim; ++d)
-          homogeneous[i * (dim + 1) + d] = weights_[i] * points[i][d];
-        homogeneous[i * (dim + 1) + dim] = weights_[i];
-      }
     std::vector<double> v;
     spline_space.evaluate(homogeneous, dim + 1, xi, v);
     Point<dim> x;
@@ -48,13 +48,6 @@ namespace vesicle_iga
   NurbsGeometry<dim>
   NurbsGeometry<dim>::refined_to(const SplineSpace<dim> &finer) const
   {
-    std::vector<double> homogeneous(spline_space.n_basis() * (dim + 1));
-    for (unsigned int i = 0; i < spline_space.n_basis(); ++i)
-      {
-        for (unsigned int d = 0; d < dim; ++d)
-          homogeneous[i * (dim + 1) + d] = weights_[i] * points[i][d];
-        homogeneous[i * (dim + 1) + dim] = weights_[i];
-      }
     std::vector<double> values(finer.n_basis() * (dim + 1)), v;
     for (unsigned int i = 0; i < finer.n_basis(); ++i)
       {

@@ -63,5 +63,8 @@ namespace vesicle_iga
     SplineSpace<dim>        spline_space;
     std::vector<Point<dim>> points;
     std::vector<double>     weights_;
+    /// (w P, w) per basis function, computed once: point() is called per
+    /// mesh vertex and per boundary interpolation point.
+    std::vector<double> homogeneous;
   };
 } // namespace vesicle_iga
