@@ -15,7 +15,8 @@ namespace vesicle_iga
 
   template <int dim>
   BoundarySelection<dim>::BoundarySelection(const std::string &text,
-                                            const std::string &parameter)
+                                            const std::string &parameter_)
+    : parameter(parameter_)
   {
     const std::string allowed
       = "'all', 'none', or a ';'-separated list of faces out of " +
@@ -115,6 +116,18 @@ namespace vesicle_iga
             return true;
         }
     return false;
+  }
+
+
+  template <int dim>
+  std::vector<std::vector<typename BoundarySelection<dim>::Range>>
+  BoundarySelection<dim>::pieces_on_face(const unsigned int face) const
+  {
+    std::vector<std::vector<Range>> result;
+    for (const auto &p : pieces)
+      if (p.face == face)
+        result.push_back(p.ranges);
+    return result;
   }
 
 

@@ -1,75 +1,220 @@
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/vector.h>
+
 #include <vesicle_iga/assembly/dirichlet_constraints.h>
+#include <vesicle_iga/base/input_error.h>
+
+#include <algorithm>
+#include <memory>
 
 namespace vesicle_iga
 {
   namespace
   {
     /**
-     * Greville interpolant on face f of the scalar function @p value(x, xi)
-     * (x physical, xi parametric), as coefficients of the face's trace
-     * functions, indexed by the natural index of the volume basis function
-     * of layer 0. Also returns the physical face Greville point of each.
+     * The trace functions of one direction of a face that do not vanish on
+     * the parametric interval [lo, hi], and the inverse of their collocation
+     * matrix at the Greville points of the space restricted to [lo, hi].
+     * The B-splines that are non-zero on an interval, restricted to it, are
+     * a basis of the restricted spline space, so this square collocation is
+     * invertible; for the whole direction it is the usual Greville
+     * interpolation (also for periodic directions).
+     */
+    struct TraceDirection
+    {
+      std::vector<unsigned int> functions;
+      std::vector<double>       points;
+      FullMatrix<double>        inverse;
+    };
+
+    TraceDirection
+    make_trace_direction(const KnotVector  &kv,
+                         const double       lo,
+                         const double       hi,
+                         const std::string &parameter)
+    {
+      TraceDirection r;
+      const auto    &z     = kv.breakpoints();
+      const double   tol   = 1e-10 * (z.back() - z.front());
+      const bool     whole = lo <= z.front() + tol && hi >= z.back() - tol;
+      std::unique_ptr<KnotVector> restricted;
+      if (whole)
+        {
+          for (unsigned int i = 0; i < kv.n_basis(); ++i)
+            r.functions.push_back(i);
+          r.points = kv.greville_points();
+        }
+      else
+        {
+          // Strong conditions on a part of a face need the part to end at
+          // breakpoints: an element cut by the end would have its whole
+          // trace fixed, also where the condition does not hold.
+          const auto snap = [&](const double x) {
+            for (unsigned int i = 0; i < z.size(); ++i)
+              if (std::abs(z[i] - x) <= tol)
+                return i;
+            throw InputError(parameter,
+                             std::to_string(x),
+                             "coordinate ranges of strongly imposed "
+                             "conditions that start and end at breakpoints "
+                             "of the mesh (or beyond the face)");
+          };
+          const unsigned int first = lo <= z.front() + tol ? 0 : snap(lo);
+          const unsigned int last
+            = hi >= z.back() - tol ? z.size() - 1 : snap(hi);
+          std::vector<double> zr(z.begin() + first, z.begin() + last + 1);
+          std::vector<int>    kr;
+          for (unsigned int i = first + 1; i < last; ++i)
+            kr.push_back(kv.interior_continuity()[i - 1]);
+          for (unsigned int e = first; e < last; ++e)
+            for (unsigned int j = 0; j <= kv.degree(); ++j)
+              {
+                const unsigned int g = kv.global_index(e, j);
+                if (std::find(r.functions.begin(), r.functions.end(), g)
+                    == r.functions.end())
+                  r.functions.push_back(g);
+              }
+          r.points = KnotVector(kv.degree(), zr, kr).greville_points();
+        }
+      const unsigned int n = r.functions.size();
+      AssertThrow(r.points.size() == n, ExcInternalError());
+      FullMatrix<double> A(n, n);
+      for (unsigned int q = 0; q < n; ++q)
+        {
+          const unsigned int e = kv.find_element(r.points[q]);
+          const auto         v = kv.evaluate_on_element(e, r.points[q], 0)[0];
+          for (unsigned int j = 0; j <= kv.degree(); ++j)
+            {
+              const auto it = std::find(r.functions.begin(),
+                                        r.functions.end(),
+                                        kv.global_index(e, j));
+              if (it != r.functions.end())
+                A(q, it - r.functions.begin()) += v[j];
+            }
+        }
+      A.gauss_jordan();
+      r.inverse = A;
+      return r;
+    }
+
+
+    /**
+     * Coefficients of the layer-0 functions of face f whose trace does not
+     * vanish on the piece (whole face, or the part cut by coordinate
+     * ranges), such that the trace equals the Greville interpolant of
+     * @p value on the piece (of value * W on a NURBS patch). Returns the
+     * natural indices of those functions and their coefficients.
      */
     template <int dim>
     void
-    interpolate_on_face(const SplineSpace<dim>                   &space,
-                        std::shared_ptr<const NurbsGeometry<dim>> geometry,
-                        const unsigned int                        face,
-                        const std::function<double(const Point<dim> &,
-                                                   const Point<dim> &)> &value,
-                        std::vector<unsigned int>                       &basis,
-                        std::vector<double>     &coefficients,
-                        std::vector<Point<dim>> &greville_x)
+    interpolate_on_face_piece(
+      const SplineSpace<dim>                                    &space,
+      std::shared_ptr<const NurbsGeometry<dim>>                  geometry,
+      const unsigned int                                         face,
+      const std::vector<typename BoundarySelection<dim>::Range> &ranges,
+      const std::string                                         &parameter,
+      const std::function<double(const Point<dim> &)>           &value,
+      std::vector<unsigned int>                                 &basis,
+      std::vector<double>                                       &coefficients)
     {
-      const unsigned int                d = face / 2;
-      std::array<KnotVector, dim - 1>   other;
-      std::array<unsigned int, dim - 1> dirs;
-      for (unsigned int k = 0, j = 0; k < dim; ++k)
+      basis.clear();
+      coefficients.clear();
+      const unsigned int d    = face / 2;
+      const KnotVector  &kv_d = space.knot_vector(d);
+      const double       xi_d
+        = (face % 2) ? kv_d.breakpoints().back() : kv_d.breakpoints().front();
+      check_input(ranges.empty() || !geometry,
+                  parameter,
+                  "coordinate ranges",
+                  "whole faces on NURBS patches (ranges are physical "
+                  "coordinates, which are not parametric ones there)");
+
+      std::array<double, dim> lo, hi;
+      for (unsigned int k = 0; k < dim; ++k)
+        {
+          lo[k] = space.knot_vector(k).breakpoints().front();
+          hi[k] = space.knot_vector(k).breakpoints().back();
+        }
+      for (const auto &r : ranges)
+        {
+          if (r.coordinate == d)
+            {
+              if (xi_d < r.min - 1e-12 || xi_d > r.max + 1e-12)
+                return; // the piece does not reach this face
+              continue;
+            }
+          lo[r.coordinate] = std::max(lo[r.coordinate], r.min);
+          hi[r.coordinate] = std::min(hi[r.coordinate], r.max);
+          if (lo[r.coordinate] >= hi[r.coordinate])
+            return; // empty piece
+        }
+
+      std::vector<unsigned int>   dirs;
+      std::vector<TraceDirection> trace;
+      for (unsigned int k = 0; k < dim; ++k)
         if (k != d)
           {
-            other[j]  = space.knot_vector(k);
-            dirs[j++] = k;
+            dirs.push_back(k);
+            trace.push_back(make_trace_direction(
+              space.knot_vector(k), lo[k], hi[k], parameter));
           }
-      const SplineSpace<dim - 1> trace(other);
-      const double               xi_d = (face % 2) ?
-                                          space.knot_vector(d).breakpoints().back() :
-                                          space.knot_vector(d).breakpoints().front();
-      const unsigned int         layer_index
-        = (face % 2) ? space.knot_vector(d).n_basis() - 1 : 0;
 
-      std::vector<double> values(trace.n_basis());
-      basis.resize(trace.n_basis());
-      greville_x.resize(trace.n_basis());
+      // Values at the tensor grid of points (first trace direction fastest).
+      unsigned int n = 1;
+      for (const auto &t : trace)
+        n *= t.functions.size();
+      std::vector<double> c(n);
       std::vector<double> w;
-      for (unsigned int i = 0; i < trace.n_basis(); ++i)
+      for (unsigned int i = 0; i < n; ++i)
         {
-          const Point<dim - 1>          g = trace.greville_point(i);
-          const auto                    m = trace.basis_multi_index(i);
-          Point<dim>                    xi;
-          std::array<unsigned int, dim> bm;
-          xi[d] = xi_d;
-          bm[d] = layer_index;
-          for (unsigned int j = 0; j < dim - 1; ++j)
+          Point<dim>   xi;
+          unsigned int r = i;
+          xi[d]          = xi_d;
+          for (unsigned int j = 0; j < trace.size(); ++j)
             {
-              xi[dirs[j]] = g[j];
-              bm[dirs[j]] = m[j];
+              xi[dirs[j]] = trace[j].points[r % trace[j].functions.size()];
+              r /= trace[j].functions.size();
             }
-          basis[i]          = space.basis_index(bm);
-          double     weight = 1.;
-          Point<dim> x      = xi;
           if (geometry)
             {
-              x = geometry->point(xi);
               space.evaluate(geometry->weights(), 1, xi, w);
-              weight = w[0];
+              c[i] = value(geometry->point(xi)) * w[0];
             }
-          greville_x[i] = x;
-          values[i]     = value(x, xi) * weight;
+          else
+            c[i] = value(xi);
         }
-      coefficients = interpolate_at_greville_points(trace, values, 1);
-      if (geometry)
-        for (unsigned int i = 0; i < trace.n_basis(); ++i)
-          coefficients[i] /= geometry->weight(basis[i]);
+      // Apply the inverse collocation matrices direction by direction.
+      unsigned int stride = 1;
+      for (const auto &t : trace)
+        {
+          const unsigned int m = t.functions.size();
+          Vector<double>     in(m), out(m);
+          for (unsigned int line = 0; line < n / m; ++line)
+            {
+              const unsigned int a = line % stride, b = line / stride;
+              for (unsigned int q = 0; q < m; ++q)
+                in[q] = c[a + stride * (q + m * b)];
+              t.inverse.vmult(out, in);
+              for (unsigned int q = 0; q < m; ++q)
+                c[a + stride * (q + m * b)] = out[q];
+            }
+          stride *= m;
+        }
+      const unsigned int layer = (face % 2) ? kv_d.n_basis() - 1 : 0;
+      for (unsigned int i = 0; i < n; ++i)
+        {
+          std::array<unsigned int, dim> bm;
+          bm[d]          = layer;
+          unsigned int r = i;
+          for (unsigned int j = 0; j < trace.size(); ++j)
+            {
+              bm[dirs[j]] = trace[j].functions[r % trace[j].functions.size()];
+              r /= trace[j].functions.size();
+            }
+          basis.push_back(space.basis_index(bm));
+          coefficients.push_back(
+            geometry ? c[i] / geometry->weight(basis.back()) : c[i]);
+        }
     }
   } // namespace
 
@@ -88,37 +233,35 @@ namespace vesicle_iga
     const IndexSet         &relevant = dof_handler.locally_relevant_dofs();
     for (unsigned int f = 0; f < 2 * dim; ++f)
       {
-        if (!selection.touches_face(f)
-            || space.knot_vector(f / 2).is_periodic())
+        if (space.knot_vector(f / 2).is_periodic())
           continue;
-        for (unsigned int c = 0; c < dof_handler.n_components(); ++c)
-          {
-            if (!components[c])
-              continue;
-            std::vector<unsigned int> basis;
-            std::vector<double>       coefficients;
-            std::vector<Point<dim>>   x;
-            interpolate_on_face<dim>(
-              space,
-              geometry,
-              f,
-              [&](const Point<dim> &p, const Point<dim> &) {
-                return g.value(p, c);
-              },
-              basis,
-              coefficients,
-              x);
-            for (unsigned int i = 0; i < basis.size(); ++i)
-              {
-                const auto dof = dof_handler.dof_index(basis[i], c);
-                if (selection.contains(f, x[i]) && relevant.is_element(dof)
-                    && !constraints.is_constrained(dof))
-                  {
-                    constraints.add_line(dof);
-                    constraints.set_inhomogeneity(dof, coefficients[i]);
-                  }
-              }
-          }
+        for (const auto &piece : selection.pieces_on_face(f))
+          for (unsigned int c = 0; c < dof_handler.n_components(); ++c)
+            {
+              if (!components[c])
+                continue;
+              std::vector<unsigned int> basis;
+              std::vector<double>       coefficients;
+              interpolate_on_face_piece<dim>(
+                space,
+                geometry,
+                f,
+                piece,
+                selection.parameter_name(),
+                [&](const Point<dim> &x) { return g.value(x, c); },
+                basis,
+                coefficients);
+              for (unsigned int i = 0; i < basis.size(); ++i)
+                {
+                  const auto dof = dof_handler.dof_index(basis[i], c);
+                  if (relevant.is_element(dof)
+                      && !constraints.is_constrained(dof))
+                    {
+                      constraints.add_line(dof);
+                      constraints.set_inhomogeneity(dof, coefficients[i]);
+                    }
+                }
+            }
       }
   }
 
@@ -139,45 +282,48 @@ namespace vesicle_iga
     for (unsigned int f = 0; f < 2 * dim; ++f)
       {
         const unsigned int d = f / 2;
-        if (!selection.touches_face(f) || space.knot_vector(d).is_periodic())
+        if (space.knot_vector(d).is_periodic())
           continue;
         const KnotVector  &kv = space.knot_vector(d);
         const auto        &t  = kv.knots();
         const unsigned int p = kv.degree(), n = kv.n_basis();
-        const double delta = (f % 2) ? t.back() - t[n - 1] : t[p + 1] - t[0];
-        std::vector<unsigned int> basis;
-        std::vector<double>       c0, cn;
-        std::vector<Point<dim>>   x;
-        interpolate_on_face<dim>(
-          space,
-          nullptr,
-          f,
-          [&](const Point<dim> &p_, const Point<dim> &) { return g.value(p_); },
-          basis,
-          c0,
-          x);
-        interpolate_on_face<dim>(
-          space,
-          nullptr,
-          f,
-          [&](const Point<dim> &p_, const Point<dim> &) {
-            Tensor<1, dim> n;
-            n[d] = (f % 2) ? 1. : -1.;
-            return gn(p_, n);
-          },
-          basis,
-          cn,
-          x);
-        for (unsigned int i = 0; i < basis.size(); ++i)
+        const double   delta = (f % 2) ? t.back() - t[n - 1] : t[p + 1] - t[0];
+        Tensor<1, dim> normal;
+        normal[d] = (f % 2) ? 1. : -1.;
+        for (const auto &piece : selection.pieces_on_face(f))
           {
-            auto m         = space.basis_multi_index(basis[i]);
-            m[d]           = (f % 2) ? n - 2 : 1;
-            const auto dof = dof_handler.dof_index(space.basis_index(m));
-            if (selection.contains(f, x[i]) && relevant.is_element(dof)
-                && !constraints.is_constrained(dof))
+            std::vector<unsigned int> basis;
+            std::vector<double>       c0, cn;
+            interpolate_on_face_piece<dim>(
+              space,
+              nullptr,
+              f,
+              piece,
+              selection.parameter_name(),
+              [&](const Point<dim> &x) { return g.value(x); },
+              basis,
+              c0);
+            interpolate_on_face_piece<dim>(
+              space,
+              nullptr,
+              f,
+              piece,
+              selection.parameter_name(),
+              [&](const Point<dim> &x) { return gn(x, normal); },
+              basis,
+              cn);
+            for (unsigned int i = 0; i < basis.size(); ++i)
               {
-                constraints.add_line(dof);
-                constraints.set_inhomogeneity(dof, c0[i] - delta / p * cn[i]);
+                auto m         = space.basis_multi_index(basis[i]);
+                m[d]           = (f % 2) ? n - 2 : 1;
+                const auto dof = dof_handler.dof_index(space.basis_index(m));
+                if (relevant.is_element(dof)
+                    && !constraints.is_constrained(dof))
+                  {
+                    constraints.add_line(dof);
+                    constraints.set_inhomogeneity(dof,
+                                                  c0[i] - delta / p * cn[i]);
+                  }
               }
           }
       }

@@ -45,17 +45,30 @@ namespace vesicle_iga
     static std::string
     face_name(const unsigned int face);
 
-  private:
     struct Range
     {
       unsigned int coordinate;
       double       min, max;
     };
+    /// The pieces on face f, each as its list of coordinate ranges (empty:
+    /// the whole face).
+    std::vector<std::vector<Range>>
+    pieces_on_face(const unsigned int face) const;
+
+    /// The .prm entry this selection was read from (for messages).
+    const std::string &
+    parameter_name() const
+    {
+      return parameter;
+    }
+
+  private:
     struct Piece
     {
       unsigned int       face;
       std::vector<Range> ranges;
     };
     std::vector<Piece> pieces;
+    std::string        parameter;
   };
 } // namespace vesicle_iga

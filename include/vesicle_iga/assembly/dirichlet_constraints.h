@@ -21,9 +21,13 @@ namespace vesicle_iga
    * coefficients are set to the Greville interpolant of g on the face
    * (of g W for a NURBS geometry with weight function W), exact for data in
    * the trace space and of optimal order otherwise. On a piece cut by
-   * coordinate ranges, the functions whose face Greville point lies in the
-   * range are constrained. Constraints are only added for locally relevant
-   * unknowns and never twice (the first condition on a corner wins).
+   * coordinate ranges (boxes only; the range ends must be breakpoints) every
+   * function whose trace does not vanish on the piece is constrained, so
+   * that the trial traces equal the interpolant on the piece and the test
+   * functions vanish on it: a conforming imposition, with the optimal rates
+   * of a whole face (measured in tests/studies/poisson_partial_faces).
+   * Constraints are only added for locally relevant unknowns and never
+   * twice (the first condition on a corner wins).
    */
   template <int dim>
   void
