@@ -30,6 +30,73 @@ namespace vesicle_iga
   } // namespace
 
 
+  namespace
+  {
+    template <int dim>
+    void
+    assemble(const SplineDofHandler<dim>                  &dof_handler,
+             std::shared_ptr<const NurbsGeometry<dim>>     geometry,
+             const Quadrature<1>                          &quadrature_1d,
+             const std::vector<const AssemblyTerm<dim> *> &terms,
+             const AffineConstraints<double>              &constraints,
+             TrilinosWrappers::SparseMatrix               *matrix,
+             TrilinosWrappers::MPI::Vector                &rhs)
+    {
+      const SplineSpace<dim> &space = dof_handler.get_space();
+      unsigned int            order = 0;
+      for (const auto *t : terms)
+        order = std::max(order, t->derivative_order());
+      const unsigned int n_local
+        = space.n_basis_per_element() * dof_handler.n_components();
+
+      if (matrix)
+        *matrix = 0;
+      rhs = 0;
+      const auto worker
+        = [&](const std::vector<unsigned int>::const_iterator &e,
+              ScratchData<dim>                                &scratch,
+              CopyData                                        &copy) {
+            copy.matrix.reinit(matrix ? n_local : 0, matrix ? n_local : 0);
+            copy.rhs.reinit(n_local);
+            dof_handler.element_dof_indices(*e, copy.indices);
+            scratch.cell.reinit(*e);
+            for (const auto *t : terms)
+              t->assemble_cell(scratch.cell, copy.matrix, copy.rhs);
+            for (unsigned int f = 0; f < 2 * dim; ++f)
+              if (space.element_at_face(*e, f))
+                {
+                  bool active = false;
+                  for (const auto *t : terms)
+                    active = active || t->acts_on_face(f);
+                  if (!active)
+                    continue;
+                  scratch.face.reinit_face(*e, f);
+                  for (const auto *t : terms)
+                    if (t->acts_on_face(f))
+                      t->assemble_face(f, scratch.face, copy.matrix, copy.rhs);
+                }
+          };
+      const auto copier = [&](const CopyData &copy) {
+        if (matrix)
+          constraints.distribute_local_to_global(
+            copy.matrix, copy.rhs, copy.indices, *matrix, rhs);
+        else
+          constraints.distribute_local_to_global(copy.rhs, copy.indices, rhs);
+      };
+      const auto &elements = dof_handler.get_mesh().locally_owned_elements();
+      WorkStream::run(elements.begin(),
+                      elements.end(),
+                      worker,
+                      copier,
+                      ScratchData<dim>(space, geometry, quadrature_1d, order),
+                      CopyData());
+      if (matrix)
+        matrix->compress(VectorOperation::add);
+      rhs.compress(VectorOperation::add);
+    }
+  } // namespace
+
+
   template <int dim>
   void
   assemble_linear_system(const SplineDofHandler<dim>              &dof_handler,
@@ -40,51 +107,22 @@ namespace vesicle_iga
                          TrilinosWrappers::SparseMatrix  &matrix,
                          TrilinosWrappers::MPI::Vector   &rhs)
   {
-    const SplineSpace<dim> &space = dof_handler.get_space();
-    unsigned int            order = 0;
-    for (const auto *t : terms)
-      order = std::max(order, t->derivative_order());
-    const unsigned int n_local
-      = space.n_basis_per_element() * dof_handler.n_components();
+    assemble<dim>(
+      dof_handler, geometry, quadrature_1d, terms, constraints, &matrix, rhs);
+  }
 
-    matrix            = 0;
-    rhs               = 0;
-    const auto worker = [&](const std::vector<unsigned int>::const_iterator &e,
-                            ScratchData<dim> &scratch,
-                            CopyData         &copy) {
-      copy.matrix.reinit(n_local, n_local);
-      copy.rhs.reinit(n_local);
-      dof_handler.element_dof_indices(*e, copy.indices);
-      scratch.cell.reinit(*e);
-      for (const auto *t : terms)
-        t->assemble_cell(scratch.cell, copy.matrix, copy.rhs);
-      for (unsigned int f = 0; f < 2 * dim; ++f)
-        if (space.element_at_face(*e, f))
-          {
-            bool active = false;
-            for (const auto *t : terms)
-              active = active || t->acts_on_face(f);
-            if (!active)
-              continue;
-            scratch.face.reinit_face(*e, f);
-            for (const auto *t : terms)
-              if (t->acts_on_face(f))
-                t->assemble_face(f, scratch.face, copy.matrix, copy.rhs);
-          }
-    };
-    const auto copier = [&](const CopyData &copy) {
-      constraints.distribute_local_to_global(
-        copy.matrix, copy.rhs, copy.indices, matrix, rhs);
-    };
-    const auto &elements = dof_handler.get_mesh().locally_owned_elements();
-    WorkStream::run(elements.begin(),
-                    elements.end(),
-                    worker,
-                    copier,
-                    ScratchData<dim>(space, geometry, quadrature_1d, order),
-                    CopyData());
-    matrix.compress(VectorOperation::add);
-    rhs.compress(VectorOperation::add);
+
+  template <int dim>
+  void
+  assemble_vector(const SplineDofHandler<dim>                  &dof_handler,
+                  std::shared_ptr<const NurbsGeometry<dim>>     geometry,
+                  const Quadrature<1>                          &quadrature_1d,
+                  const std::vector<const AssemblyTerm<dim> *> &terms,
+                  const AffineConstraints<double>              &constraints,
+                  TrilinosWrappers::MPI::Vector                &rhs)
+  {
+    assemble<dim>(
+      dof_handler, geometry, quadrature_1d, terms, constraints, nullptr, rhs);
   }
 
 
@@ -148,6 +186,13 @@ namespace vesicle_iga
     const std::vector<const AssemblyTerm<dim> *> &,                    \
     const AffineConstraints<double> &,                                 \
     TrilinosWrappers::SparseMatrix &,                                  \
+    TrilinosWrappers::MPI::Vector &);                                  \
+  template void assemble_vector(                                       \
+    const SplineDofHandler<dim> &,                                     \
+    const std::shared_ptr<const NurbsGeometry<dim>>,                   \
+    const Quadrature<1> &,                                             \
+    const std::vector<const AssemblyTerm<dim> *> &,                    \
+    const AffineConstraints<double> &,                                 \
     TrilinosWrappers::MPI::Vector &);                                  \
   template std::vector<double> integrate_field(                        \
     const SplineDofHandler<dim> &,                                     \

@@ -1,10 +1,13 @@
 #include <deal.II/lac/solver_cg.h>
 #include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/solver_gmres.h>
 #include <deal.II/lac/trilinos_precondition.h>
 #include <deal.II/lac/trilinos_solver.h>
 
 #include <vesicle_iga/base/input_error.h>
 #include <vesicle_iga/solvers/linear_solver.h>
+
+#include <memory>
 
 namespace vesicle_iga
 {
@@ -15,9 +18,12 @@ namespace vesicle_iga
     prm.enter_subsection("Linear solver");
     prm.declare_entry("Method",
                       default_method,
-                      Patterns::Selection("cg-amg|direct"),
+                      Patterns::Selection("cg-amg|gmres-amg|gmres-ilu|direct"),
                       "cg-amg: conjugate gradients with Trilinos ML algebraic "
-                      "multigrid; direct: Amesos KLU sparse LU.");
+                      "multigrid (SPD systems); gmres-amg: restarted GMRES "
+                      "with the same AMG; gmres-ilu: restarted GMRES with "
+                      "ILU(1) on each rank (block Jacobi across ranks); "
+                      "direct: Amesos KLU sparse LU.");
     prm.declare_entry("Tolerance",
                       "1e-12",
                       Patterns::Double(0, 1),
@@ -59,24 +65,47 @@ namespace vesicle_iga
       }
     else
       {
-        SolverControl                     control(parameters.max_iterations,
+        SolverControl control(parameters.max_iterations,
                               parameters.tolerance * b_norm);
-        TrilinosWrappers::PreconditionAMG amg;
-        TrilinosWrappers::PreconditionAMG::AdditionalData data;
-        data.elliptic              = true;
-        data.higher_order_elements = true;
-        data.smoother_sweeps       = 2;
-        data.aggregation_threshold = 0.02;
-        amg.initialize(A, data);
-        SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
+        std::unique_ptr<TrilinosWrappers::PreconditionBase> preconditioner;
+        if (parameters.method == "gmres-ilu")
+          {
+            auto ilu = std::make_unique<TrilinosWrappers::PreconditionILU>();
+            TrilinosWrappers::PreconditionILU::AdditionalData data(1);
+            ilu->initialize(A, data);
+            preconditioner = std::move(ilu);
+          }
+        else
+          {
+            auto amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
+            TrilinosWrappers::PreconditionAMG::AdditionalData data;
+            data.elliptic              = (parameters.method == "cg-amg");
+            data.higher_order_elements = true;
+            data.smoother_sweeps       = 2;
+            data.aggregation_threshold = 0.02;
+            amg->initialize(A, data);
+            preconditioner = std::move(amg);
+          }
         try
           {
-            cg.solve(A, x, b, amg);
+            if (parameters.method == "cg-amg")
+              {
+                SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
+                cg.solve(A, x, b, *preconditioner);
+              }
+            else
+              {
+                SolverGMRES<TrilinosWrappers::MPI::Vector> gmres(
+                  control,
+                  SolverGMRES<TrilinosWrappers::MPI::Vector>::AdditionalData(
+                    100));
+                gmres.solve(A, x, b, *preconditioner);
+              }
           }
         catch (const SolverControl::NoConvergence &e)
           {
             throw std::runtime_error(
-              "Linear solver: CG-AMG did not converge in "
+              "Linear solver: " + parameters.method + " did not converge in "
               + std::to_string(e.last_step) + " iterations (residual "
               + std::to_string(e.last_residual)
               + "); raise 'Max iterations' or use 'set Method = direct'.");

@@ -10,6 +10,8 @@ namespace vesicle_iga
   biharmonic_mms_description();
   StudyDescription
   plate_with_hole_description();
+  StudyDescription
+  willmore_flow_description();
 
   const std::vector<StudyDescription> &
   available_studies()
@@ -17,7 +19,8 @@ namespace vesicle_iga
     static const std::vector<StudyDescription> studies
       = {poisson_mms_description(),
          biharmonic_mms_description(),
-         plate_with_hole_description()};
+         plate_with_hole_description(),
+      willmore_flow_description()};
     return studies;
   }
 } // namespace vesicle_iga

@@ -33,6 +33,20 @@ namespace vesicle_iga
                          TrilinosWrappers::MPI::Vector   &rhs);
 
   /**
+   * The right-hand side alone (terms still receive a matrix argument, which
+   * is discarded; terms that know they are asked for a vector only, such as
+   * a Newton residual, skip their matrix work).
+   */
+  template <int dim>
+  void
+  assemble_vector(const SplineDofHandler<dim>                  &dof_handler,
+                  std::shared_ptr<const NurbsGeometry<dim>>     geometry,
+                  const Quadrature<1>                          &quadrature_1d,
+                  const std::vector<const AssemblyTerm<dim> *> &terms,
+                  const AffineConstraints<double>              &constraints,
+                  TrilinosWrappers::MPI::Vector                &rhs);
+
+  /**
    * Integrate quantities of a computed field over the locally owned
    * elements and sum over all ranks. @p integrand receives the element
    * values, a quadrature point and the field's local coefficients (one

@@ -1,0 +1,104 @@
+#include <vesicle_iga/base/input_error.h>
+#include <vesicle_iga/time/step_size_controller.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace vesicle_iga
+{
+  void
+  StepSizeController::Parameters::declare(ParameterHandler  &p,
+                                          const std::string &default_dt,
+                                          const std::string &default_max_dt)
+  {
+    p.enter_subsection("Time step");
+    p.declare_entry("Adaptive",
+                    "true",
+                    Patterns::Bool(),
+                    "Adapt dt to a local error estimate (spec section 2.5); "
+                    "false: constant dt = Initial dt (still cut on Newton "
+                    "failure).");
+    p.declare_entry("Initial dt", default_dt, Patterns::Double(0), "First dt.");
+    p.declare_entry("Min dt",
+                    "1e-14",
+                    Patterns::Double(0),
+                    "Smallest dt; a failure below it ends the run with an "
+                    "error (the last checkpoint and time series are kept).");
+    p.declare_entry("Max dt",
+                    default_max_dt,
+                    Patterns::Double(0),
+                    "Cap on dt.");
+    p.declare_entry("Absolute tolerance",
+                    "1e-4",
+                    Patterns::Double(0),
+                    "atol of the weighted RMS error norm.");
+    p.declare_entry("Relative tolerance",
+                    "1e-4",
+                    Patterns::Double(0),
+                    "rtol of the weighted RMS error norm.");
+    p.declare_entry("Increase delay",
+                    "3",
+                    Patterns::Integer(0),
+                    "Consecutive converged steps required after a failure "
+                    "before dt may grow again.");
+    p.leave_subsection();
+  }
+
+
+  void
+  StepSizeController::Parameters::parse(ParameterHandler &p)
+  {
+    p.enter_subsection("Time step");
+    adaptive       = p.get_bool("Adaptive");
+    initial_dt     = p.get_double("Initial dt");
+    min_dt         = p.get_double("Min dt");
+    max_dt         = p.get_double("Max dt");
+    atol           = p.get_double("Absolute tolerance");
+    rtol           = p.get_double("Relative tolerance");
+    increase_delay = p.get_integer("Increase delay");
+    p.leave_subsection();
+    check_input(initial_dt > 0 && initial_dt <= max_dt && min_dt <= initial_dt,
+                "Time step/Initial dt",
+                std::to_string(initial_dt),
+                "Min dt <= Initial dt <= Max dt and > 0");
+  }
+
+
+  StepSizeController::StepSizeController(const Parameters &p)
+    : prm(p)
+    , current_dt(p.initial_dt)
+  {}
+
+
+  bool
+  StepSizeController::accept(const double error)
+  {
+    ++steps_since_cut;
+    if (!prm.adaptive || error < 0)
+      return true;
+    const double c0   = std::pow(1. / std::max(error, 1e-12), 0.5);
+    double       rho  = std::pow(c0, 0.6) * std::pow(c_prev, -0.2);
+    rho               = 1 + std::atan(rho - 1);
+    const bool ok     = rho >= 0.81;
+    double     factor = std::clamp(rho, 0.1, 10.);
+    if (steps_since_cut < int(prm.increase_delay))
+      factor = std::min(factor, 1.);
+    current_dt = std::clamp(current_dt * factor, prm.min_dt, prm.max_dt);
+    if (ok)
+      c_prev = c0;
+    else
+      steps_since_cut = std::min(steps_since_cut, 0);
+    return ok;
+  }
+
+
+  bool
+  StepSizeController::reject_failure()
+  {
+    steps_since_cut = 0;
+    if (current_dt * 0.25 < prm.min_dt)
+      return false;
+    current_dt *= 0.25;
+    return true;
+  }
+} // namespace vesicle_iga
