@@ -37,7 +37,16 @@ main(int argc, char *argv[])
         "set Study = poisson-mms\nsubsection Poisson MMS\n"
         "set Nitsche boundaries = left\nend\n"},
        {"plate in 3D", "set Study = plate-with-hole\nset Dimension = 3\n"},
-       {"unknown study", "set Study = nonsense\n"}};
+       {"unknown study", "set Study = nonsense\n"},
+       {"vesicle does not fit in the domain",
+        "set Study = willmore-flow\nsubsection Willmore flow\n"
+        "set Semi-axes = 1.8\nend\n"},
+       {"epsilon too small for the mesh",
+        "set Study = willmore-flow\nsubsection Willmore flow\n"
+        "set Epsilon over h = 0.5\nend\n"},
+       {"sphere with unequal semi-axes",
+        "set Study = willmore-flow\nsubsection Willmore flow\n"
+        "set Semi-axes = 1, 0.5\nend\n"}};
   for (const auto &[name, text] : cases)
     {
       std::ofstream("case.prm") << "set Output directory = results\n" << text;
