@@ -18,6 +18,7 @@
 #include <vesicle_iga/assembly/assembler.h>
 #include <vesicle_iga/assembly/dirichlet_constraints.h>
 #include <vesicle_iga/base/input_error.h>
+#include <vesicle_iga/io/checkpoint.h>
 #include <vesicle_iga/io/spline_output.h>
 #include <vesicle_iga/physics/bending_energy.h>
 #include <vesicle_iga/physics/ellipsoid_distance.h>
@@ -95,7 +96,8 @@ namespace vesicle_iga
       double                         rho_inf, end_time, stationarity_tolerance;
       unsigned int                   max_steps, max_newton_iterations;
       double                         newton_rtol, newton_atol;
-      unsigned int                   vtu_interval;
+      unsigned int                   vtu_interval, checkpoint_interval;
+      std::string                    restart_file;
       bool                           check_jacobian_first;
       LinearSolverParameters         solver;
       StepSizeController::Parameters time_step;
@@ -147,6 +149,8 @@ namespace vesicle_iga
       newton_rtol            = prm.get_double("Newton relative tolerance");
       newton_atol            = prm.get_double("Newton absolute tolerance");
       vtu_interval           = prm.get_integer("VTU interval");
+      checkpoint_interval    = prm.get_integer("Checkpoint interval");
+      restart_file           = prm.get("Restart from");
       check_jacobian_first   = prm.get_bool("Check Jacobian");
       solver.parse(prm);
       time_step.parse(prm);
@@ -522,17 +526,110 @@ namespace vesicle_iga
       op    = std::make_unique<PhaseFieldOperator<dim>>(*dofs, terms);
       alpha = std::make_unique<GeneralizedAlpha>(rho_inf);
 
+      // Vectors in the natural numbering of the basis, complete on every
+      // rank: checkpoints do not depend on the partition.
+      const auto to_natural = [&](const TrilinosWrappers::MPI::Vector &v) {
+        TrilinosWrappers::MPI::Vector all(owned,
+                                          complete_index_set(dofs->n_dofs()),
+                                          comm);
+        all = v;
+        std::vector<double> c(space->n_basis());
+        for (unsigned int i = 0; i < c.size(); ++i)
+          c[i] = all[dofs->dof_index(i)];
+        return c;
+      };
+      const auto from_natural
+        = [&](const std::vector<double> &c, TrilinosWrappers::MPI::Vector &v) {
+            for (unsigned int i = 0; i < c.size(); ++i)
+              if (owned.is_element(dofs->dof_index(i)))
+                v[dofs->dof_index(i)] = c[i];
+            v.compress(VectorOperation::insert);
+          };
+
+      StepSizeController            controller(time_step);
+      TrilinosWrappers::MPI::Vector phi_nm1(phi_n);
+      double                        t = 0, dt_prev = 0, energy_prev = 0;
+      double                        V0 = 0, A0 = 0;
+      unsigned int                  step = 0, rejected = 0;
+      // For the closing summary: worst constraint error and largest energy
+      // increase between accepted steps.
+      double                max_constraint_error = 0, max_energy_increase = 0;
+      std::array<double, 4> alm_state{{0, 0, 0, 0}};
+      double                alm_alpha = 0, alm_beta = 0;
+      const std::vector<std::string> vector_names
+        = {"phi_n", "phidot_n", "phi_nm1"};
+      const std::vector<std::string> scalar_names = {"t",
+                                                     "dt_prev",
+                                                     "step",
+                                                     "energy_prev",
+                                                     "dt",
+                                                     "c_prev",
+                                                     "steps_since_cut",
+                                                     "alm_alpha",
+                                                     "alm_beta",
+                                                     "alm_T00",
+                                                     "alm_T01",
+                                                     "alm_T10",
+                                                     "alm_T11",
+                                                     "V0",
+                                                     "A0",
+                                                     "n_basis",
+                                                     "max_constraint_error",
+                                                     "max_energy_increase"};
+      if (!restart_file.empty())
+        {
+          const Checkpoint c
+            = Checkpoint::read(restart_file, comm, vector_names, scalar_names);
+          check_input(c.scalars.at("n_basis") == space->n_basis(),
+                      "Restart from",
+                      restart_file,
+                      "a checkpoint of the same mesh and degree (it has "
+                        + std::to_string(int(c.scalars.at("n_basis")))
+                        + " unknowns, this run "
+                        + std::to_string(space->n_basis()) + ")");
+          from_natural(c.vectors.at("phi_n"), phi_n);
+          from_natural(c.vectors.at("phidot_n"), phidot_n);
+          from_natural(c.vectors.at("phi_nm1"), phi_nm1);
+          t           = c.scalars.at("t");
+          dt_prev     = c.scalars.at("dt_prev");
+          step        = c.scalars.at("step");
+          energy_prev = c.scalars.at("energy_prev");
+          controller.set_state(c.scalars.at("dt"),
+                               c.scalars.at("c_prev"),
+                               c.scalars.at("steps_since_cut"));
+          alm_alpha            = c.scalars.at("alm_alpha");
+          alm_beta             = c.scalars.at("alm_beta");
+          alm_state            = {{c.scalars.at("alm_T00"),
+                                   c.scalars.at("alm_T01"),
+                                   c.scalars.at("alm_T10"),
+                                   c.scalars.at("alm_T11")}};
+          V0                   = c.scalars.at("V0");
+          A0                   = c.scalars.at("A0");
+          max_constraint_error = c.scalars.at("max_constraint_error");
+          max_energy_increase  = c.scalars.at("max_energy_increase");
+        }
       ghost_a                 = phi_n;
       const Integrals initial = integrals(ghost_a);
-      const double    V0 = initial.volume, A0 = initial.area;
+      if (restart_file.empty())
+        {
+          V0          = initial.volume;
+          A0          = initial.area;
+          energy_prev = initial.bending;
+          alm_alpha   = V0;
+          alm_beta    = A0;
+          alm_state   = {{1, 0, 0, 1}};
+        }
+      Integrals current = initial;
       context.pcout << "Willmore flow: " << dim << "D, degree " << degree
                     << ", " << space->n_elements() << " elements, "
                     << dofs->n_dofs() << " unknowns, h = " << h
                     << ", epsilon = " << epsilon << " (" << epsilon_over_h
                     << " h)" << std::endl
-                    << "initial: bending energy / kappa = "
-                    << initial.bending / kappa << ", area A0 = " << A0
-                    << ", volume V0 = " << V0 << std::endl;
+                    << (restart_file.empty() ? "initial" : "restart")
+                    << " (t = " << t << ", step " << step
+                    << "): bending energy / kappa = " << initial.bending / kappa
+                    << ", area A0 = " << A0 << ", volume V0 = " << V0
+                    << std::endl;
 
       if (check_jacobian_first)
         {
@@ -544,18 +641,37 @@ namespace vesicle_iga
         }
 
       // Time series: one row per accepted step, flushed at once so that a
-      // killed run keeps what it had.
-      std::ofstream csv;
+      // killed run keeps what it had. A restart keeps the rows up to its
+      // checkpoint and continues the file.
+      std::ofstream     csv;
+      const std::string csv_name
+        = context.output_directory + "/time-series.csv";
       if (Utilities::MPI::this_mpi_process(comm) == 0)
         {
-          csv.open(context.output_directory + "/time-series.csv");
-          csv << "step,t,dt,newton_iterations,krylov_iterations,"
-                 "alm_iterations,rejected_steps,bending_energy,total_energy,"
-                 "area_error,volume_error";
-          for (unsigned int d = 0; d < dim; ++d)
-            csv << ",extent_"
-                << "xyz"[d];
-          csv << '\n' << std::setprecision(12);
+          std::vector<std::string> kept;
+          if (!restart_file.empty())
+            {
+              std::ifstream old(csv_name);
+              std::string   line;
+              while (std::getline(old, line))
+                if (kept.empty()
+                    || std::stoul(line.substr(0, line.find(','))) <= step)
+                  kept.push_back(line);
+            }
+          csv.open(csv_name);
+          if (kept.empty())
+            {
+              csv << "step,t,dt,newton_iterations,krylov_iterations,"
+                     "alm_iterations,rejected_steps,bending_energy,"
+                     "total_energy,area_error,volume_error";
+              for (unsigned int d = 0; d < dim; ++d)
+                csv << ",extent_"
+                    << "xyz"[d];
+              csv << '\n';
+            }
+          for (const auto &line : kept)
+            csv << line << '\n';
+          csv << std::setprecision(12) << std::flush;
         }
       const auto write_vtu = [&](const unsigned int step) {
         TimerOutput::Scope t(*timer, "output");
@@ -566,18 +682,38 @@ namespace vesicle_iga
                      context.output_directory,
                      "phi-" + Utilities::int_to_string(step, 5));
       };
-      if (vtu_interval > 0)
+      if (vtu_interval > 0 && restart_file.empty())
         write_vtu(0);
 
-      StepSizeController controller(time_step);
-      ModifiedALM        alm(V0, A0, constraint_tolerance, max_alm_iterations);
-      TrilinosWrappers::MPI::Vector phi_nm1(phi_n);
-      double       t = 0, dt_prev = 0, energy_prev = initial.bending;
-      Integrals    current = initial;
-      unsigned int step = 0, rejected = 0;
-      // For the closing summary: worst constraint error and largest energy
-      // increase between accepted steps.
-      double max_constraint_error = 0, max_energy_increase = 0;
+      ModifiedALM alm(V0, A0, constraint_tolerance, max_alm_iterations);
+      alm.set_state(alm_alpha, alm_beta, alm_state);
+      const auto write_checkpoint = [&]() {
+        TimerOutput::Scope t_(*timer, "output");
+        Checkpoint         c;
+        c.vectors["phi_n"]    = to_natural(phi_n);
+        c.vectors["phidot_n"] = to_natural(phidot_n);
+        c.vectors["phi_nm1"]  = to_natural(phi_nm1);
+        const auto &T         = alm.inverse_jacobian();
+        c.scalars             = {{"t", t},
+                                 {"dt_prev", dt_prev},
+                                 {"step", step},
+                                 {"energy_prev", energy_prev},
+                                 {"dt", controller.dt()},
+                                 {"c_prev", controller.previous_filter_value()},
+                                 {"steps_since_cut", controller.steps_since_failure()},
+                                 {"alm_alpha", alm.alpha()},
+                                 {"alm_beta", alm.beta()},
+                                 {"alm_T00", T[0]},
+                                 {"alm_T01", T[1]},
+                                 {"alm_T10", T[2]},
+                                 {"alm_T11", T[3]},
+                                 {"V0", V0},
+                                 {"A0", A0},
+                                 {"n_basis", double(space->n_basis())},
+                                 {"max_constraint_error", max_constraint_error},
+                                 {"max_energy_increase", max_energy_increase}};
+        c.write(context.output_directory + "/checkpoint.h5", comm);
+      };
       while (t < end_time * (1 - 1e-12) && step < max_steps)
         {
           const double dt         = std::min(controller.dt(), end_time - t);
@@ -641,13 +777,18 @@ namespace vesicle_iga
               ++rejected;
               alm.set_state(alpha_save, beta_save, Tinv_save);
               if (!ok && !controller.reject_failure())
-                throw std::runtime_error(
-                  "Willmore flow: the step failed (Newton or ALM did not "
-                  "converge) with dt at its minimum at t = "
-                  + std::to_string(t)
-                  + "; the time series up to that "
-                    "point is in "
-                  + context.output_directory + "/time-series.csv");
+                {
+                  write_checkpoint();
+                  throw std::runtime_error(
+                    "Willmore flow: the step failed (Newton or ALM did not "
+                    "converge) with dt at its minimum at t = "
+                    + std::to_string(t)
+                    + "; the time series up to that "
+                      "point is in "
+                    + context.output_directory
+                    + "/time-series.csv, the last accepted state in "
+                      "checkpoint.h5");
+                }
               continue;
             }
 
@@ -691,6 +832,8 @@ namespace vesicle_iga
           rejected = 0;
           if (vtu_interval > 0 && step % vtu_interval == 0)
             write_vtu(step);
+          if (checkpoint_interval > 0 && step % checkpoint_interval == 0)
+            write_checkpoint();
           const bool saturated = !time_step.adaptive
                                  || controller.dt() >= time_step.max_dt * 0.999;
           if (saturated
@@ -706,6 +849,7 @@ namespace vesicle_iga
         }
       if (vtu_interval > 0 && step % vtu_interval != 0)
         write_vtu(step);
+      write_checkpoint();
       context.pcout << "final: t=" << t << " steps=" << step
                     << " E_B/kappa=" << current.bending / kappa
                     << " area_error=" << current.area / A0 - 1
@@ -829,6 +973,18 @@ namespace vesicle_iga
                           "0",
                           Patterns::Integer(0),
                           "Write phi every N accepted steps (0: never).");
+        prm.declare_entry("Checkpoint interval",
+                          "10",
+                          Patterns::Integer(0),
+                          "Write <Output directory>/checkpoint.h5 every N "
+                          "accepted steps (0: only at the end and on "
+                          "failure).");
+        prm.declare_entry("Restart from",
+                          "",
+                          Patterns::Anything(),
+                          "A checkpoint.h5 to continue from (same mesh and "
+                          "degree; any number of ranks); empty: start from "
+                          "the initial shape.");
         prm.declare_entry("Check Jacobian",
                           "false",
                           Patterns::Bool(),

@@ -1,0 +1,72 @@
+#include <deal.II/base/hdf5.h>
+#include <deal.II/base/mpi.h>
+
+#include <vesicle_iga/base/input_error.h>
+#include <vesicle_iga/io/checkpoint.h>
+
+#include <cstdio>
+#include <fstream>
+
+namespace vesicle_iga
+{
+  using namespace dealii;
+
+  void
+  Checkpoint::write(const std::string &filename, const MPI_Comm comm) const
+  {
+    const bool        root = Utilities::MPI::this_mpi_process(comm) == 0;
+    const std::string tmp  = filename + ".tmp";
+    {
+      HDF5::File file(tmp, HDF5::File::FileAccessMode::create, comm);
+      for (const auto &[name, v] : vectors)
+        {
+          // Sizes are taken from rank 0 so that every rank creates the same
+          // dataset (the collective call needs identical arguments).
+          const unsigned long long n
+            = Utilities::MPI::broadcast(comm, (unsigned long long)v.size(), 0);
+          auto dataset
+            = file.create_dataset<double>(name, std::vector<hsize_t>{n});
+          if (root)
+            dataset.write(v);
+          else
+            dataset.write_none<double>();
+        }
+      for (const auto &[name, value] : scalars)
+        file.set_attribute(name, value);
+    }
+    MPI_Barrier(comm);
+    if (root)
+      std::rename(tmp.c_str(), filename.c_str());
+    MPI_Barrier(comm);
+  }
+
+
+  Checkpoint
+  Checkpoint::read(const std::string              &filename,
+                   const MPI_Comm                  comm,
+                   const std::vector<std::string> &vector_names,
+                   const std::vector<std::string> &scalar_names)
+  {
+    check_input(static_cast<bool>(std::ifstream(filename)),
+                "Restart from",
+                filename,
+                "a checkpoint file written by a previous run");
+    Checkpoint c;
+    try
+      {
+        HDF5::File file(filename, HDF5::File::FileAccessMode::open, comm);
+        for (const auto &name : vector_names)
+          c.vectors[name] = file.open_dataset(name).read<std::vector<double>>();
+        for (const auto &name : scalar_names)
+          c.scalars[name] = file.get_attribute<double>(name);
+      }
+    catch (...)
+      {
+        throw InputError("Restart from",
+                         filename,
+                         "a complete checkpoint of this study (missing or "
+                         "unreadable datasets)");
+      }
+    return c;
+  }
+} // namespace vesicle_iga

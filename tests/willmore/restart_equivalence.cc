@@ -1,0 +1,83 @@
+// Restart from a checkpoint continues the same trajectory: a circle flow of
+// 8 steps run at once, and the same flow stopped after 4 steps and
+// restarted from its checkpoint.h5 to step 8, must give the same time
+// series (to round-off: the checkpoint stores every piece of state, the
+// three phase-field levels, dt and the controller's filter, the ALM
+// targets and secant matrix). The test prints both final rows and the
+// largest difference over all rows of the two time-series.csv files.
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/utilities.h>
+
+#include <vesicle_iga/app/program.h>
+
+#include <cmath>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+std::vector<std::vector<double>>
+read_csv(const std::string &name)
+{
+  std::ifstream                    f(name);
+  std::string                      line;
+  std::vector<std::vector<double>> rows;
+  std::getline(f, line); // header
+  while (std::getline(f, line))
+    rows.push_back(dealii::Utilities::string_to_double(
+      dealii::Utilities::split_string_list(line, ',')));
+  return rows;
+}
+
+int
+main(int argc, char *argv[])
+{
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  const bool                               root
+    = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+  std::ofstream     out(root ? "output" : "/dev/null");
+  const std::string common = "set Study = willmore-flow\n"
+                             "set Print details = false\n"
+                             "subsection Willmore flow\n"
+                             "set Semi-axes = 1\nset Center = 0,0\n"
+                             "set End time = 10\n"
+                             "subsection Mesh\nset Lower corner = -3.2\n"
+                             "set Upper corner = 3.2\nset Elements = 32\nend\n"
+                             "subsection Time step\nset Initial dt = 1e-3\n"
+                             "set Max dt = 0.05\nend\n";
+  const auto        run    = [&](const std::string &text) {
+    if (root)
+      std::ofstream("case.prm") << common << text;
+    MPI_Barrier(MPI_COMM_WORLD);
+    std::ostringstream captured;
+    auto              *old  = std::cout.rdbuf(captured.rdbuf());
+    const int          code = vesicle_iga::run_program({"case.prm"});
+    std::cout.rdbuf(old);
+    return code;
+  };
+  const int a
+    = run("set Max steps = 8\nend\nset Output directory = straight\n");
+  const int b
+    = run("set Max steps = 4\nend\nset Output directory = restarted\n");
+  const int c = run("set Max steps = 8\nset Restart from = "
+                    "restarted/checkpoint.h5\nend\n"
+                    "set Output directory = restarted\n");
+  out << "exit codes " << a << ' ' << b << ' ' << c << '\n';
+  const auto straight  = read_csv("straight/time-series.csv");
+  const auto restarted = read_csv("restarted/time-series.csv");
+  out << "rows: " << straight.size() << " and " << restarted.size() << '\n';
+  double diff = 0;
+  for (unsigned int i = 0; i < std::min(straight.size(), restarted.size()); ++i)
+    for (unsigned int j = 0; j < straight[i].size(); ++j)
+      diff = std::max(diff,
+                      std::abs(straight[i][j] - restarted[i][j])
+                        / (1e-3 + std::abs(straight[i][j])));
+  out << "final row, uninterrupted:";
+  for (const double x : straight.back())
+    out << ' ' << x;
+  out << "\nfinal row, restarted:   ";
+  for (const double x : restarted.back())
+    out << ' ' << x;
+  out << "\nlargest relative difference over all rows: "
+      << (diff < 1e-9 ? "below 1e-9" : std::to_string(diff)) << '\n';
+}
