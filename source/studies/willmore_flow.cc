@@ -885,7 +885,9 @@ namespace vesicle_iga
       [](ParameterHandler &prm) {
         prm.enter_subsection(section);
         BoxSpaceParameters::declare(prm, "-2", "2", "32");
-        LinearSolverParameters::declare(prm, "direct");
+        // GMRES with ILU(1): on the 2D ellipse (13.8k unknowns) 7-8
+        // iterations per Newton step at small dt and 5x faster than KLU.
+        LinearSolverParameters::declare(prm, "gmres-ilu");
         StepSizeController::Parameters::declare(prm, "1e-4", "0.1");
         prm.declare_entry("Degree",
                           "3",

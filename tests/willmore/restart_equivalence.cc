@@ -41,6 +41,7 @@ main(int argc, char *argv[])
                              "subsection Willmore flow\n"
                              "set Semi-axes = 1\nset Center = 0,0\n"
                              "set End time = 10\n"
+                             "subsection Linear solver\nset Method = direct\nend\n"
                              "subsection Mesh\nset Lower corner = -3.2\n"
                              "set Upper corner = 3.2\nset Elements = 32\nend\n"
                              "subsection Time step\nset Initial dt = 1e-3\n"
