@@ -39,44 +39,34 @@ namespace vesicle_iga
   ModifiedALM::Result
   ModifiedALM::step(const StepSolver &solve, const double v_n, const double a_n)
   {
-    std::array<double, 3> als, bes, vs, as;
+    // The last three iterates (oldest first).
+    std::array<double, 3> als{}, bes{}, vs{}, as{};
     double                v = v_n, a = a_n;
-    unsigned int          it = 0;
-    // Lines 5-10 of Algorithm 1: three updates with the current inverse.
-    for (unsigned int i = 0; i < 3; ++i)
+    for (unsigned int it = 1; it <= max_iterations; ++it)
       {
-        update(v, a);
-        ++it;
-        if (!solve(al, be, v, a))
-          return {false, it, v, a};
-        if (converged(v, a))
-          return {true, it, v, a};
-        als[i] = al;
-        bes[i] = be;
-        vs[i]  = v;
-        as[i]  = a;
-      }
-    // Lines 11-17: secant updates (E22).
-    while (it < max_iterations)
-      {
-        const double m00 = vs[1] - vs[0], m01 = vs[2] - vs[0];
-        const double m10 = as[1] - as[0], m11 = as[2] - as[0];
-        const double det = m00 * m11 - m01 * m10;
-        const double scale
-          = (std::abs(m00) + std::abs(m01)) * (std::abs(m10) + std::abs(m11));
-        if (std::abs(det) > 1e-12 * scale && scale > 0)
+        // Lines 5-10 of Algorithm 1 use the current inverse for the first
+        // three updates; from the fourth on (lines 11-17) it is replaced
+        // by the secant estimate (E22) from the last three iterates.
+        if (it > 3)
           {
-            const double i00 = m11 / det, i01 = -m01 / det;
-            const double i10 = -m10 / det, i11 = m00 / det;
-            const double d00 = als[1] - als[0], d01 = als[2] - als[0];
-            const double d10 = bes[1] - bes[0], d11 = bes[2] - bes[0];
-            Tinv = {{d00 * i00 + d01 * i10,
-                     d00 * i01 + d01 * i11,
-                     d10 * i00 + d11 * i10,
-                     d10 * i01 + d11 * i11}};
+            const double m00 = vs[1] - vs[0], m01 = vs[2] - vs[0];
+            const double m10 = as[1] - as[0], m11 = as[2] - as[0];
+            const double det   = m00 * m11 - m01 * m10;
+            const double scale = (std::abs(m00) + std::abs(m01))
+                                 * (std::abs(m10) + std::abs(m11));
+            if (std::abs(det) > 1e-12 * scale && scale > 0)
+              {
+                const double i00 = m11 / det, i01 = -m01 / det;
+                const double i10 = -m10 / det, i11 = m00 / det;
+                const double d00 = als[1] - als[0], d01 = als[2] - als[0];
+                const double d10 = bes[1] - bes[0], d11 = bes[2] - bes[0];
+                Tinv = {{d00 * i00 + d01 * i10,
+                         d00 * i01 + d01 * i11,
+                         d10 * i00 + d11 * i10,
+                         d10 * i01 + d11 * i11}};
+              }
           }
         update(v, a);
-        ++it;
         if (!solve(al, be, v, a))
           return {false, it, v, a};
         if (converged(v, a))
@@ -86,6 +76,6 @@ namespace vesicle_iga
         vs  = {{vs[1], vs[2], v}};
         as  = {{as[1], as[2], a}};
       }
-    return {false, it, v, a};
+    return {false, max_iterations, v, a};
   }
 } // namespace vesicle_iga
