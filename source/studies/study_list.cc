@@ -20,7 +20,7 @@ namespace vesicle_iga
       = {poisson_mms_description(),
          biharmonic_mms_description(),
          plate_with_hole_description(),
-      willmore_flow_description()};
+         willmore_flow_description()};
     return studies;
   }
 } // namespace vesicle_iga

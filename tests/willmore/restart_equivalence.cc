@@ -36,17 +36,18 @@ main(int argc, char *argv[])
   const bool                               root
     = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
   std::ofstream     out(root ? "output" : "/dev/null");
-  const std::string common = "set Study = willmore-flow\n"
-                             "set Print details = false\n"
-                             "subsection Willmore flow\n"
-                             "set Semi-axes = 1\nset Center = 0,0\n"
-                             "set End time = 10\n"
-                             "subsection Linear solver\nset Method = direct\nend\n"
-                             "subsection Mesh\nset Lower corner = -3.2\n"
-                             "set Upper corner = 3.2\nset Elements = 32\nend\n"
-                             "subsection Time step\nset Initial dt = 1e-3\n"
-                             "set Max dt = 0.05\nend\n";
-  const auto        run    = [&](const std::string &text) {
+  const std::string common
+    = "set Study = willmore-flow\n"
+      "set Print details = false\n"
+      "subsection Willmore flow\n"
+      "set Semi-axes = 1\nset Center = 0,0\n"
+      "set End time = 10\n"
+      "subsection Linear solver\nset Method = direct\nend\n"
+      "subsection Mesh\nset Lower corner = -3.2\n"
+      "set Upper corner = 3.2\nset Elements = 32\nend\n"
+      "subsection Time step\nset Initial dt = 1e-3\n"
+      "set Max dt = 0.05\nend\n";
+  const auto run = [&](const std::string &text) {
     if (root)
       std::ofstream("case.prm") << common << text;
     MPI_Barrier(MPI_COMM_WORLD);
