@@ -131,16 +131,6 @@ namespace vesicle_iga
   }
 
 
-  template <int dim>
-  bool
-  BoundarySelection<dim>::whole_faces_only() const
-  {
-    for (const auto &p : pieces)
-      if (!p.ranges.empty())
-        return false;
-    return true;
-  }
-
   template class BoundarySelection<1>;
   template class BoundarySelection<2>;
   template class BoundarySelection<3>;

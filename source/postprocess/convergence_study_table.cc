@@ -77,22 +77,4 @@ namespace vesicle_iga
   }
 
 
-  double
-  ConvergenceStudyTable::last_rate(const unsigned int degree,
-                                   const std::string &norm) const
-  {
-    const unsigned int i
-      = std::find(norms.begin(), norms.end(), norm) - norms.begin();
-    const Row *prev = nullptr, *last = nullptr;
-    for (const auto &r : rows)
-      if (r.degree == degree)
-        {
-          prev = last;
-          last = &r;
-        }
-    if (!prev)
-      return 0;
-    return std::log(prev->errors[i] / last->errors[i])
-           / std::log(prev->h / last->h);
-  }
 } // namespace vesicle_iga

@@ -9,22 +9,6 @@ namespace vesicle_iga
 {
   namespace
   {
-    std::vector<double>
-    doubles(const std::string &text, const std::string &parameter)
-    {
-      try
-        {
-          return Utilities::string_to_double(
-            Utilities::split_string_list(text, ','));
-        }
-      catch (...)
-        {
-          throw InputError(parameter,
-                           text,
-                           "a comma-separated list of numbers");
-        }
-    }
-
     template <typename T>
     std::vector<T>
     per_direction(const std::vector<T> &v,
@@ -89,16 +73,19 @@ namespace vesicle_iga
   BoxSpaceParameters::parse(ParameterHandler &prm, const unsigned int dim)
   {
     prm.enter_subsection("Mesh");
-    lower = per_direction(doubles(prm.get("Lower corner"), "Mesh/Lower corner"),
+    lower = per_direction(parse_double_list(prm.get("Lower corner"),
+                                            "Mesh/Lower corner"),
                           dim,
                           "Mesh/Lower corner",
                           prm.get("Lower corner"));
-    upper = per_direction(doubles(prm.get("Upper corner"), "Mesh/Upper corner"),
+    upper = per_direction(parse_double_list(prm.get("Upper corner"),
+                                            "Mesh/Upper corner"),
                           dim,
                           "Mesh/Upper corner",
                           prm.get("Upper corner"));
     std::vector<unsigned int> n;
-    for (const double x : doubles(prm.get("Elements"), "Mesh/Elements"))
+    for (const double x :
+         parse_double_list(prm.get("Elements"), "Mesh/Elements"))
       {
         check_input(x >= 1 && x == std::floor(x),
                     "Mesh/Elements",
@@ -107,10 +94,11 @@ namespace vesicle_iga
         n.push_back(static_cast<unsigned int>(x));
       }
     elements = per_direction(n, dim, "Mesh/Elements", prm.get("Elements"));
-    grading  = per_direction(doubles(prm.get("Grading"), "Mesh/Grading"),
-                            dim,
-                            "Mesh/Grading",
-                            prm.get("Grading"));
+    grading
+      = per_direction(parse_double_list(prm.get("Grading"), "Mesh/Grading"),
+                      dim,
+                      "Mesh/Grading",
+                      prm.get("Grading"));
     for (unsigned int d = 0; d < dim; ++d)
       {
         check_input(upper[d] > lower[d],
@@ -127,7 +115,7 @@ namespace vesicle_iga
       {
         const std::string name = std::string("Breakpoints ") + "xyz"[d];
         if (!Utilities::trim(prm.get(name)).empty())
-          breakpoints[d] = doubles(prm.get(name), "Mesh/" + name);
+          breakpoints[d] = parse_double_list(prm.get(name), "Mesh/" + name);
       }
     periodic.assign(dim, false);
     for (const auto &d :

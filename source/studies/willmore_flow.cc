@@ -40,21 +40,6 @@ namespace vesicle_iga
   {
     const char *section = "Willmore flow";
 
-    std::vector<double>
-    parse_doubles(const std::string &text, const std::string &name)
-    {
-      try
-        {
-          return Utilities::string_to_double(
-            Utilities::split_string_list(text, ','));
-        }
-      catch (...)
-        {
-          throw InputError(name, text, "a comma-separated list of numbers");
-        }
-    }
-
-
     template <int dim>
     class WillmoreFlow : public Study
     {
@@ -78,7 +63,12 @@ namespace vesicle_iga
                   unsigned int &krylov_iterations);
       /// Zero crossings of phi along the axis d through the centre.
       double
-      extent(const unsigned int d) const;
+      extent(const std::vector<double> &natural_phi,
+             const unsigned int         d) const;
+      /// A vector in the natural numbering of the basis, complete on every
+      /// rank: for point evaluation and partition-independent checkpoints.
+      std::vector<double>
+      natural_coefficients(const TrilinosWrappers::MPI::Vector &v) const;
       void
       check_jacobian();
 
@@ -134,11 +124,11 @@ namespace vesicle_iga
       epsilon_over_h                = prm.get_double("Epsilon over h");
       shape                         = prm.get("Initial shape");
       const std::string center_text = prm.get("Center");
-      center                        = parse_doubles(center_text, "Center");
-      semi_axes              = parse_doubles(prm.get("Semi-axes"), "Semi-axes");
-      constraint_method      = prm.get("Constraint method");
-      M1                     = prm.get_double("M1");
-      M2                     = prm.get_double("M2");
+      center                        = parse_double_list(center_text, "Center");
+      semi_axes         = parse_double_list(prm.get("Semi-axes"), "Semi-axes");
+      constraint_method = prm.get("Constraint method");
+      M1                = prm.get_double("M1");
+      M2                = prm.get_double("M2");
       constraint_tolerance   = prm.get_double("Constraint tolerance");
       max_alm_iterations     = prm.get_integer("Max ALM iterations");
       rho_inf                = prm.get_double("rho_inf");
@@ -290,17 +280,26 @@ namespace vesicle_iga
 
 
     template <int dim>
-    double
-    WillmoreFlow<dim>::extent(const unsigned int d) const
+    std::vector<double>
+    WillmoreFlow<dim>::natural_coefficients(
+      const TrilinosWrappers::MPI::Vector &v) const
     {
-      // phi in natural numbering on every rank (for point evaluation).
       TrilinosWrappers::MPI::Vector all(dofs->locally_owned_dofs(),
                                         complete_index_set(dofs->n_dofs()),
                                         context.communicator);
-      all = phi;
+      all = v;
       std::vector<double> c(space->n_basis());
       for (unsigned int i = 0; i < c.size(); ++i)
         c[i] = all[dofs->dof_index(i)];
+      return c;
+    }
+
+
+    template <int dim>
+    double
+    WillmoreFlow<dim>::extent(const std::vector<double> &c,
+                              const unsigned int         d) const
+    {
       std::vector<double> value;
       const auto          phi_at = [&](const double s) {
         Point<dim> x;
@@ -526,18 +525,6 @@ namespace vesicle_iga
       op    = std::make_unique<PhaseFieldOperator<dim>>(*dofs, terms);
       alpha = std::make_unique<GeneralizedAlpha>(rho_inf);
 
-      // Vectors in the natural numbering of the basis, complete on every
-      // rank: checkpoints do not depend on the partition.
-      const auto to_natural = [&](const TrilinosWrappers::MPI::Vector &v) {
-        TrilinosWrappers::MPI::Vector all(owned,
-                                          complete_index_set(dofs->n_dofs()),
-                                          comm);
-        all = v;
-        std::vector<double> c(space->n_basis());
-        for (unsigned int i = 0; i < c.size(); ++i)
-          c[i] = all[dofs->dof_index(i)];
-        return c;
-      };
       const auto from_natural
         = [&](const std::vector<double> &c, TrilinosWrappers::MPI::Vector &v) {
             for (unsigned int i = 0; i < c.size(); ++i)
@@ -690,9 +677,9 @@ namespace vesicle_iga
       const auto write_checkpoint = [&]() {
         TimerOutput::Scope t_(*timer, "output");
         Checkpoint         c;
-        c.vectors["phi_n"]    = to_natural(phi_n);
-        c.vectors["phidot_n"] = to_natural(phidot_n);
-        c.vectors["phi_nm1"]  = to_natural(phi_nm1);
+        c.vectors["phi_n"]    = natural_coefficients(phi_n);
+        c.vectors["phidot_n"] = natural_coefficients(phidot_n);
+        c.vectors["phi_nm1"]  = natural_coefficients(phi_nm1);
         const auto &T         = alm.inverse_jacobian();
         c.scalars             = {{"t", t},
                                  {"dt_prev", dt_prev},
@@ -808,9 +795,10 @@ namespace vesicle_iga
           max_energy_increase
             = std::max(max_energy_increase,
                        (energy - energy_prev) / std::abs(energy_prev));
-          std::vector<double> extents(dim);
+          const std::vector<double> natural_phi = natural_coefficients(phi_n);
+          std::vector<double>       extents(dim);
           for (unsigned int d = 0; d < dim; ++d)
-            extents[d] = extent(d);
+            extents[d] = extent(natural_phi, d);
           if (csv.is_open())
             {
               csv << step << ',' << t << ',' << dt << ',' << newton_its << ','
@@ -854,9 +842,10 @@ namespace vesicle_iga
                     << " E_B/kappa=" << current.bending / kappa
                     << " area_error=" << current.area / A0 - 1
                     << " volume_error=" << current.volume / V0 - 1;
+      const std::vector<double> natural_phi = natural_coefficients(phi_n);
       for (unsigned int d = 0; d < dim; ++d)
         context.pcout << " extent_"
-                      << "xyz"[d] << "=" << extent(d);
+                      << "xyz"[d] << "=" << extent(natural_phi, d);
       context.pcout << std::endl;
       if (step > 0)
         context.pcout

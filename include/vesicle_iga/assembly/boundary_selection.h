@@ -38,9 +38,6 @@ namespace vesicle_iga
     /// Whether the physical point x of face f belongs to the selection.
     bool
     contains(const unsigned int face, const Point<dim> &x) const;
-    /// The same selection without coordinate ranges?
-    bool
-    whole_faces_only() const;
 
     static std::string
     face_name(const unsigned int face);

@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace vesicle_iga
 {
@@ -32,4 +33,9 @@ namespace vesicle_iga
     if (!condition)
       throw InputError(parameter, value, allowed);
   }
+
+  /// A comma-separated list of numbers from a .prm entry; InputError
+  /// naming @p parameter otherwise.
+  std::vector<double>
+  parse_double_list(const std::string &text, const std::string &parameter);
 } // namespace vesicle_iga

@@ -36,9 +36,6 @@ namespace vesicle_iga
     void
     write_csv(const std::string &filename) const;
 
-    /// Rate between the last two rows of @p degree for norm @p norm.
-    double
-    last_rate(const unsigned int degree, const std::string &norm) const;
 
   private:
     struct Row

@@ -40,11 +40,6 @@ namespace vesicle_iga
     {
       return current_dt;
     }
-    const Parameters &
-    parameters() const
-    {
-      return prm;
-    }
     /// Whether the error norm e (weighted RMS of (N5), < 0: no estimate)
     /// accepts the step; sets the next dt either way.
     bool
