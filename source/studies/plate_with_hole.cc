@@ -172,7 +172,8 @@ namespace vesicle_iga
                                                           TimerOutput::never,
                         TimerOutput::wall_times);
       ConvergenceStudyTable table(
-        2, {"energy", "stress_L2", "energy_relative", "stress_L2_relative"});
+        2,
+        {"L2", "energy", "stress_L2", "energy_relative", "stress_L2_relative"});
       for (const unsigned int p : convergence.degrees)
         for (unsigned int r = 0; r <= convergence.refinements; ++r)
           {
@@ -221,7 +222,7 @@ namespace vesicle_iga
               QGauss<1>(p + 3 + convergence.extra_quadrature_points),
               1,
               problem.solution(),
-              4,
+              5,
               [&](const SplineCellValues<2>              &v,
                   const unsigned int                      q,
                   const std::vector<std::vector<double>> &c,
@@ -241,12 +242,19 @@ namespace vesicle_iga
                   += (s_exact - s_h).norm() * (s_exact - s_h).norm() * v.JxW(q);
                 sums[2] += elasticity.energy_product(e_exact) * v.JxW(q);
                 sums[3] += s_exact.norm() * s_exact.norm() * v.JxW(q);
+                // Displacement error against (P4).
+                const Tensor<1, 2> u_exact
+                  = exact.displacement(v.quadrature_point(q));
+                for (unsigned int a = 0; a < 2; ++a)
+                  sums[4]
+                    += std::pow(v.value(c[a], q) - u_exact[a], 2) * v.JxW(q);
               });
             table.add_row(p,
                           space.n_elements(),
                           problem.dofs().n_dofs(),
                           problem.mesh().max_cell_diameter(),
-                          {std::sqrt(errors[0]),
+                          {std::sqrt(errors[4]),
+                           std::sqrt(errors[0]),
                            std::sqrt(errors[1]),
                            std::sqrt(errors[0] / errors[2]),
                            std::sqrt(errors[1] / errors[3])});
@@ -294,11 +302,13 @@ namespace vesicle_iga
                              "solution-p" + std::to_string(p));
               }
           }
-      context.pcout << "Errors: energy = (int (eps-eps_h):C(eps-eps_h))^(1/2) "
-                       "(no factor 1/2), stress_L2 = ||sigma-sigma_h||_L2; "
-                       "*_relative: divided by the same norm of the exact "
-                       "field."
-                    << std::endl;
+      context.pcout
+        << "Errors: energy = (int (eps-eps_h):C(eps-eps_h))^(1/2) "
+           "(no factor 1/2), stress_L2 = ||sigma-sigma_h||_L2, L2 = "
+           "||u-u_h||_L2 against (P4); "
+           "*_relative: divided by the same norm of the exact "
+           "field."
+        << std::endl;
       if (context.pcout.is_active())
         table.print(context.pcout.get_stream());
       if (Utilities::MPI::this_mpi_process(context.communicator) == 0)
