@@ -13,8 +13,9 @@ namespace vesicle_iga
       ScratchData(const SplineSpace<dim>                   &space,
                   std::shared_ptr<const NurbsGeometry<dim>> geometry,
                   const Quadrature<1>                      &q,
-                  const unsigned int                        order)
-        : cell(space, geometry, q, order)
+                  const unsigned int                        order,
+                  const bool                                shape_tables)
+        : cell(space, geometry, q, order, shape_tables)
         , face(space, geometry, q, order)
       {}
       SplineCellValues<dim> cell;
@@ -42,10 +43,14 @@ namespace vesicle_iga
              TrilinosWrappers::SparseMatrix               *matrix,
              TrilinosWrappers::MPI::Vector                &rhs)
     {
-      const SplineSpace<dim> &space = dof_handler.get_space();
-      unsigned int            order = 0;
+      const SplineSpace<dim> &space        = dof_handler.get_space();
+      unsigned int            order        = 0;
+      bool                    shape_tables = false;
       for (const auto *t : terms)
-        order = std::max(order, t->derivative_order());
+        {
+          order        = std::max(order, t->derivative_order());
+          shape_tables = shape_tables || t->needs_shape_tables();
+        }
       const unsigned int n_local
         = space.n_basis_per_element() * dof_handler.n_components();
 
@@ -84,12 +89,13 @@ namespace vesicle_iga
           constraints.distribute_local_to_global(copy.rhs, copy.indices, rhs);
       };
       const auto &elements = dof_handler.get_mesh().locally_owned_elements();
-      WorkStream::run(elements.begin(),
-                      elements.end(),
-                      worker,
-                      copier,
-                      ScratchData<dim>(space, geometry, quadrature_1d, order),
-                      CopyData());
+      WorkStream::run(
+        elements.begin(),
+        elements.end(),
+        worker,
+        copier,
+        ScratchData<dim>(space, geometry, quadrature_1d, order, shape_tables),
+        CopyData());
       if (matrix)
         matrix->compress(VectorOperation::add);
       rhs.compress(VectorOperation::add);

@@ -29,7 +29,7 @@ namespace vesicle_iga
 
   template <int dim>
   double
-  BendingEnergy<dim>::energy_density(const PhaseFieldPoint<dim> &p) const
+  BendingEnergy<dim>::density(const PhaseFieldPoint<dim> &p) const
   {
     const double W = eps * p.laplacian_phi + g(p.phi);
     return 3 * kappa / (4 * std::sqrt(2.) * eps) * W * W;
@@ -59,7 +59,7 @@ namespace vesicle_iga
 
   template <int dim>
   double
-  AreaConstraint<dim>::area_density(const PhaseFieldPoint<dim> &p) const
+  AreaConstraint<dim>::density(const PhaseFieldPoint<dim> &p) const
   {
     const double s = p.phi * p.phi - 1;
     return 3 / (2 * std::sqrt(2.))

@@ -13,19 +13,25 @@ namespace vesicle_iga
 {
   void
   LinearSolverParameters::declare(ParameterHandler  &prm,
-                                  const std::string &default_method)
+                                  const std::string &default_method,
+                                  const std::string &default_tolerance,
+                                  const std::string &default_smoother)
   {
     prm.enter_subsection("Linear solver");
     prm.declare_entry("Method",
                       default_method,
-                      Patterns::Selection("cg-amg|gmres-amg|gmres-ilu|direct"),
+                      Patterns::Selection(
+                        "cg-amg|gmres-amg|gmres-ilu|direct|gmres-mg|cg-mg"),
                       "cg-amg: conjugate gradients with Trilinos ML algebraic "
                       "multigrid (SPD systems); gmres-amg: restarted GMRES "
                       "with the same AMG; gmres-ilu: restarted GMRES with "
                       "ILU(1) on each rank (block Jacobi across ranks); "
-                      "direct: Amesos KLU sparse LU.");
+                      "direct: Amesos KLU sparse LU; gmres-mg, cg-mg: GMRES "
+                      "or CG with one V-cycle of the geometric spline "
+                      "multigrid (subsection Multigrid; phase-field studies "
+                      "only).");
     prm.declare_entry("Tolerance",
-                      "1e-12",
+                      default_tolerance,
                       Patterns::Double(0, 1),
                       "Relative residual reduction of the Krylov method.");
     prm.declare_entry("Max iterations",
@@ -33,6 +39,7 @@ namespace vesicle_iga
                       Patterns::Integer(1),
                       "Iteration limit of the Krylov method; reaching it is "
                       "an error.");
+    SplineMultigridParameters::declare(prm, default_smoother);
     prm.leave_subsection();
   }
 
@@ -44,6 +51,7 @@ namespace vesicle_iga
     method         = prm.get("Method");
     tolerance      = prm.get_double("Tolerance");
     max_iterations = prm.get_integer("Max iterations");
+    multigrid.parse(prm);
     prm.leave_subsection();
   }
 
@@ -53,7 +61,8 @@ namespace vesicle_iga
                       const TrilinosWrappers::SparseMatrix &A,
                       TrilinosWrappers::MPI::Vector        &x,
                       const TrilinosWrappers::MPI::Vector  &b,
-                      const AffineConstraints<double>      &constraints)
+                      const AffineConstraints<double>      &constraints,
+                      MatrixPreconditioner                 *multigrid)
   {
     LinearSolveResult result{0, 0.};
     const double      b_norm = b.l2_norm();
@@ -68,7 +77,16 @@ namespace vesicle_iga
         SolverControl control(parameters.max_iterations,
                               parameters.tolerance * b_norm);
         std::unique_ptr<TrilinosWrappers::PreconditionBase> preconditioner;
-        if (parameters.method == "gmres-ilu")
+        if (parameters.uses_multigrid())
+          {
+            check_input(multigrid != nullptr,
+                        "Linear solver/Method",
+                        parameters.method,
+                        "a method without multigrid for this study (the "
+                        "spline multigrid serves the phase-field solvers)");
+            multigrid->initialize(A);
+          }
+        else if (parameters.method == "gmres-ilu")
           {
             auto ilu = std::make_unique<TrilinosWrappers::PreconditionILU>();
             TrilinosWrappers::PreconditionILU::AdditionalData data(1);
@@ -88,19 +106,37 @@ namespace vesicle_iga
           }
         try
           {
-            if (parameters.method == "cg-amg")
+            // The multigrid V-cycle as a deal.II preconditioner.
+            struct Wrapper
+            {
+              const MatrixPreconditioner *p;
+              void
+              vmult(TrilinosWrappers::MPI::Vector       &dst,
+                    const TrilinosWrappers::MPI::Vector &src) const
               {
-                SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
-                cg.solve(A, x, b, *preconditioner);
+                p->vmult(dst, src);
               }
+            } mg{multigrid};
+            using Vector   = TrilinosWrappers::MPI::Vector;
+            const auto run = [&](const auto &P) {
+              if (parameters.method == "cg-amg" || parameters.method == "cg-mg")
+                {
+                  SolverCG<Vector> cg(control);
+                  cg.solve(A, x, b, P);
+                }
+              else
+                {
+                  // Right preconditioning: the tolerance then applies to
+                  // the true residual, not to the preconditioned one.
+                  SolverGMRES<Vector> gmres(
+                    control, SolverGMRES<Vector>::AdditionalData(100, true));
+                  gmres.solve(A, x, b, P);
+                }
+            };
+            if (parameters.uses_multigrid())
+              run(mg);
             else
-              {
-                SolverGMRES<TrilinosWrappers::MPI::Vector> gmres(
-                  control,
-                  SolverGMRES<TrilinosWrappers::MPI::Vector>::AdditionalData(
-                    100));
-                gmres.solve(A, x, b, *preconditioner);
-              }
+              run(*preconditioner);
           }
         catch (const SolverControl::NoConvergence &e)
           {

@@ -49,8 +49,25 @@ namespace vesicle_iga
         scope.emplace(*timer, "solve");
       }
     TrilinosWrappers::MPI::Vector x(dof_handler.locally_owned_dofs(), comm);
-    const auto                    result
-      = solve_linear_system(solver, matrix, x, rhs, constraints_);
+    std::unique_ptr<SplineMultigrid<dim>> multigrid;
+    if (solver.uses_multigrid())
+      {
+        // The multigrid works on the homogeneous version of the
+        // constraints (the increments of a Dirichlet problem).
+        AffineConstraints<double> homogeneous(
+          dof_handler.locally_relevant_dofs());
+        for (const auto &line : constraints_.get_lines())
+          {
+            homogeneous.add_line(line.index);
+            homogeneous.add_entries(line.index, line.entries);
+          }
+        homogeneous.close();
+        multigrid = std::make_unique<SplineMultigrid<dim>>(dof_handler,
+                                                           homogeneous,
+                                                           solver.multigrid);
+      }
+    const auto result = solve_linear_system(
+      solver, matrix, x, rhs, constraints_, multigrid.get());
     ghosted_solution.reinit(dof_handler.locally_owned_dofs(),
                             dof_handler.locally_relevant_dofs(),
                             comm);

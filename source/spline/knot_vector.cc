@@ -1,3 +1,5 @@
+#include <deal.II/lac/full_matrix.h>
+
 #include <vesicle_iga/base/input_error.h>
 #include <vesicle_iga/spline/knot_vector.h>
 
@@ -321,6 +323,52 @@ namespace vesicle_iga
         nk = kk;
       }
     return KnotVector(p, nz, nk, periodic, k_seam);
+  }
+
+
+  KnotVector
+  KnotVector::coarsened() const
+  {
+    std::vector<double> nz{z[0]};
+    std::vector<int>    nk;
+    for (unsigned int j = 2; j < z.size() - 1; j += 2)
+      {
+        nz.push_back(z[j]);
+        nk.push_back(k[j - 1]);
+      }
+    nz.push_back(z.back());
+    return KnotVector(p, nz, nk, periodic, k_seam);
+  }
+
+
+  std::vector<std::vector<double>>
+  prolongation_matrix(const KnotVector &coarse, const KnotVector &fine)
+  {
+    const unsigned int nf = fine.n_basis(), nc = coarse.n_basis();
+    const auto         g = fine.greville_points();
+    // Collocation matrix of the fine space and the coarse functions at the
+    // fine Greville points.
+    dealii::FullMatrix<double> G(nf, nf), V(nf, nc);
+    for (unsigned int r = 0; r < nf; ++r)
+      {
+        const unsigned int ef = fine.find_element(g[r]);
+        const auto         vf = fine.evaluate_on_element(ef, g[r], 0)[0];
+        for (unsigned int j = 0; j <= fine.degree(); ++j)
+          G(r, fine.global_index(ef, j)) += vf[j];
+        const unsigned int ec = coarse.find_element(g[r]);
+        const auto         vc = coarse.evaluate_on_element(ec, g[r], 0)[0];
+        for (unsigned int j = 0; j <= coarse.degree(); ++j)
+          V(r, coarse.global_index(ec, j)) += vc[j];
+      }
+    G.gauss_jordan();
+    dealii::FullMatrix<double> P(nf, nc);
+    G.mmult(P, V);
+    std::vector<std::vector<double>> rows(nf, std::vector<double>(nc, 0.));
+    for (unsigned int i = 0; i < nf; ++i)
+      for (unsigned int j = 0; j < nc; ++j)
+        if (std::abs(P(i, j)) > 1e-14)
+          rows[i][j] = P(i, j);
+    return rows;
   }
 
 

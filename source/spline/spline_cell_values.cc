@@ -11,10 +11,12 @@ namespace vesicle_iga
     const SplineSpace<dim>                   &space_,
     std::shared_ptr<const NurbsGeometry<dim>> geometry_,
     const Quadrature<1>                      &quadrature_1d,
-    const unsigned int                        max_derivative)
+    const unsigned int                        max_derivative,
+    const bool                                with_shape_tables)
     : space(space_)
     , geometry(geometry_)
     , order(geometry_ ? std::max(1u, max_derivative) : max_derivative)
+    , shape_tables(with_shape_tables || geometry_)
     , n_local(space_.n_basis_per_element())
   {
     AssertThrow(order <= 3, ExcMessage("Derivatives up to order 3 only."));
@@ -138,9 +140,11 @@ namespace vesicle_iga
     const Point<dim>     lower = space.element_lower_corner(element);
 
     // Univariate B-spline derivatives on the element: N = C B / h^r.
-    std::array<unsigned int, dim>        np, nq;
-    std::array<std::vector<double>, dim> N; // [r][q][j] flattened
-    n_q = 1;
+    std::array<unsigned int, dim>        &np = univariate.n_basis;
+    std::array<unsigned int, dim>        &nq = univariate.n_points;
+    std::array<std::vector<double>, dim> &N  = univariate.shape;
+    univariate.max_order                     = order;
+    n_q                                      = 1;
     for (unsigned int d = 0; d < dim; ++d)
       {
         const KnotVector &kv = space.knot_vector(d);
@@ -159,6 +163,27 @@ namespace vesicle_iga
                   s += C[j][a] * tab[d]->table[r][q * np[d] + a];
                 N[d][(r * nq[d] + q) * np[d] + j] = s * scale;
               }
+        univariate.weights[d].resize(nq[d]);
+        for (unsigned int q = 0; q < nq[d]; ++q)
+          univariate.weights[d][q]
+            = (*wts[d])[q] * (int(d) == face / 2 && face >= 0 ? 1. : h[d]);
+      }
+    if (!shape_tables)
+      {
+        // Only the univariate factors and the weights are wanted.
+        jxw.resize(n_q);
+        for (unsigned int q = 0; q < n_q; ++q)
+          {
+            unsigned int rq = q;
+            double       w  = 1.;
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                w *= univariate.weights[d][rq % nq[d]];
+                rq /= nq[d];
+              }
+            jxw[q] = w;
+          }
+        return;
       }
 
     values.resize(n_q * n_local);

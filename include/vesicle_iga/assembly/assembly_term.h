@@ -25,6 +25,15 @@ namespace vesicle_iga
     virtual unsigned int
     derivative_order() const = 0;
 
+    /// Whether assemble_cell reads the full basis tables of
+    /// SplineCellValues; a term that works on the univariate factors by
+    /// sum factorisation returns false and saves their computation.
+    virtual bool
+    needs_shape_tables() const
+    {
+      return true;
+    }
+
     virtual void
     assemble_cell(const SplineCellValues<dim> & /*values*/,
                   FullMatrix<double> & /*matrix*/,

@@ -24,11 +24,11 @@ namespace vesicle_iga
     std::string
     name() const override
     {
-      return "bending";
+      return "bending_energy";
     }
     /// Energy density 3 kappa W^2 / (4 sqrt2 eps).
     double
-    energy_density(const PhaseFieldPoint<dim> &p) const;
+    density(const PhaseFieldPoint<dim> &p) const override;
     void
     add_variation(const PhaseFieldPoint<dim> &point,
                   PointForm<dim>             &form) const override;
@@ -59,16 +59,21 @@ namespace vesicle_iga
     std::string
     name() const override
     {
-      return "area constraint";
+      return "area";
     }
     void
     set_multiplier(const double Lambda_A)
     {
       Lambda = Lambda_A;
     }
+    double
+    multiplier() const
+    {
+      return Lambda;
+    }
     /// Density of A (E9).
     double
-    area_density(const PhaseFieldPoint<dim> &p) const;
+    density(const PhaseFieldPoint<dim> &p) const override;
     void
     add_variation(const PhaseFieldPoint<dim> &point,
                   PointForm<dim>             &form) const override;
@@ -87,15 +92,20 @@ namespace vesicle_iga
     std::string
     name() const override
     {
-      return "volume constraint";
+      return "volume";
     }
     void
     set_multiplier(const double Lambda_V)
     {
       Lambda = Lambda_V;
     }
-    static double
-    volume_density(const PhaseFieldPoint<dim> &p)
+    double
+    multiplier() const
+    {
+      return Lambda;
+    }
+    double
+    density(const PhaseFieldPoint<dim> &p) const override
     {
       return 0.5 * (1 - p.phi);
     }

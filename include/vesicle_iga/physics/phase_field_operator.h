@@ -6,6 +6,7 @@
 #include <vesicle_iga/parallel/spline_dof_handler.h>
 #include <vesicle_iga/physics/phase_field_term.h>
 
+#include <functional>
 #include <vector>
 
 namespace vesicle_iga
@@ -43,22 +44,64 @@ namespace vesicle_iga
     {
       return 2;
     }
+    bool
+    needs_shape_tables() const override
+    {
+      return false;
+    }
     void
     assemble_cell(const SplineCellValues<dim> &values,
                   FullMatrix<double>          &matrix,
                   Vector<double>              &rhs) const override;
 
-    /// phi, grad phi and Delta phi at quadrature point q.
+    /// phi, grad phi and Delta phi at quadrature point q from the full
+    /// basis tables (reference for the sum-factorised path).
     static PhaseFieldPoint<dim>
     point(const SplineCellValues<dim> &values,
           const unsigned int           q,
           const std::vector<double>   &coefficients);
+
+    /// The electric potential psi^n whose gradient enters the points
+    /// (ghosted, on the same dofs; nullptr: no field).
+    void
+    set_potential(const TrilinosWrappers::MPI::Vector *ghosted_psi)
+    {
+      psi = ghosted_psi;
+    }
+
+    /// phi, grad phi and Delta phi (and grad psi if @p psi_coefficients
+    /// is not empty) at all quadrature points of an element by sum
+    /// factorisation.
+    static void
+    evaluate_points(const SumFactorization<dim>       &kernel,
+                    const std::vector<double>         &phi_coefficients,
+                    const std::vector<double>         &psi_coefficients,
+                    std::vector<PhaseFieldPoint<dim>> &points);
+
+    /// Sum over the locally owned elements and all ranks of
+    /// integrand(point, JxW, sums) at every quadrature point (n_sums
+    /// values), with the potential of set_potential().
+    std::vector<double>
+    integrate(
+      const TrilinosWrappers::MPI::Vector              &ghosted_phi,
+      const Quadrature<1>                              &quadrature_1d,
+      const unsigned int                                n_sums,
+      const std::function<void(const PhaseFieldPoint<dim> &,
+                               const double,
+                               std::vector<double> &)> &integrand) const;
+
+    /// The functional of every term (energies, A, V), integrated at once.
+    std::vector<double>
+    integrate_terms(const std::vector<const PhaseFieldTerm<dim> *> &terms,
+                    const TrilinosWrappers::MPI::Vector            &ghosted_phi,
+                    const Quadrature<1> &quadrature_1d) const;
 
   private:
     const SplineDofHandler<dim>             &dofs;
     std::vector<const PhaseFieldTerm<dim> *> terms;
     const TrilinosWrappers::MPI::Vector     *phi     = nullptr;
     const TrilinosWrappers::MPI::Vector     *phi_dot = nullptr;
+    const TrilinosWrappers::MPI::Vector     *psi     = nullptr;
     double mass_factor = 1, stiffness_factor = 1;
     bool   with_matrix = true;
   };

@@ -15,9 +15,12 @@ namespace vesicle_iga
   template <int dim>
   struct PhaseFieldPoint
   {
-    double         phi;
+    double         phi = 0;
     Tensor<1, dim> grad_phi;
-    double         laplacian_phi;
+    double         laplacian_phi = 0;
+    /// Gradient of the electric potential psi^n (spec section 3.9: frozen
+    /// during the phase-field solve); zero without an applied field.
+    Tensor<1, dim> grad_psi;
   };
 
   /**
@@ -46,16 +49,23 @@ namespace vesicle_iga
   };
 
   /**
-   * One energy term of the phase-field gradient flow (spec section 3.5):
-   * its energy density and its first and second variations at a point.
+   * One term of the phase-field gradient flow (spec section 3.5): the
+   * density of its functional and the first and second variations at a
+   * point. For an energy (bending, flexoelectric, dielectric) the
+   * functional is the energy; for a constraint term it is the constrained
+   * quantity (A or V) and the variation is multiplied by the multiplier.
    */
   template <int dim>
   class PhaseFieldTerm
   {
   public:
     virtual ~PhaseFieldTerm() = default;
+    /// Short name, used as CSV column (e.g. bending_energy, area).
     virtual std::string
     name() const = 0;
+    /// The integrand of the term's functional at a point.
+    virtual double
+    density(const PhaseFieldPoint<dim> &point) const = 0;
     /// Adds r and K of the term at the point.
     virtual void
     add_variation(const PhaseFieldPoint<dim> &point,

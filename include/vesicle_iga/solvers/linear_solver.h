@@ -6,6 +6,8 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <vesicle_iga/solvers/spline_multigrid.h>
+
 #include <string>
 
 namespace vesicle_iga
@@ -18,16 +20,29 @@ namespace vesicle_iga
    *  - cg-amg: CG preconditioned by one V-cycle of Trilinos ML AMG
    *    (higher-order smoothing, as the spline couplings are wide);
    *  - direct: Amesos KLU (gathers the matrix: small problems and fourth
-   *    order operators, on which AMG is not robust).
+   *    order operators, on which AMG is not robust);
+   *  - gmres-mg, cg-mg: one V-cycle of the geometric spline multigrid
+   *    (SplineMultigrid), robust for the fourth-order operators of Part E.
    */
   struct LinearSolverParameters
   {
-    std::string  method         = "cg-amg";
-    double       tolerance      = 1e-12;
-    unsigned int max_iterations = 5000;
+    std::string               method         = "cg-amg";
+    double                    tolerance      = 1e-12;
+    unsigned int              max_iterations = 5000;
+    SplineMultigridParameters multigrid;
+
+    /// Whether the method needs a SplineMultigrid from the caller.
+    bool
+    uses_multigrid() const
+    {
+      return method == "gmres-mg" || method == "cg-mg";
+    }
 
     static void
-    declare(ParameterHandler &prm, const std::string &default_method);
+    declare(ParameterHandler  &prm,
+            const std::string &default_method,
+            const std::string &default_tolerance = "1e-12",
+            const std::string &default_smoother  = "ssor");
     void
     parse(ParameterHandler &prm);
   };
@@ -39,10 +54,12 @@ namespace vesicle_iga
   };
 
   /// Solve A x = b (relative tolerance), then set the constrained entries.
+  /// The multigrid methods need @p multigrid (initialized here with A).
   LinearSolveResult
   solve_linear_system(const LinearSolverParameters         &parameters,
                       const TrilinosWrappers::SparseMatrix &A,
                       TrilinosWrappers::MPI::Vector        &x,
                       const TrilinosWrappers::MPI::Vector  &b,
-                      const AffineConstraints<double>      &constraints);
+                      const AffineConstraints<double>      &constraints,
+                      MatrixPreconditioner *multigrid = nullptr);
 } // namespace vesicle_iga

@@ -71,8 +71,8 @@ namespace vesicle_iga
     void
     update(const double v, const double a);
 
-    const double          V0, A0, tol;
-    const unsigned int    max_iterations;
+    double                V0, A0, tol;
+    unsigned int          max_iterations;
     double                al, be;
     std::array<double, 4> Tinv{{1, 0, 0, 1}}; // row-major 2x2
   };

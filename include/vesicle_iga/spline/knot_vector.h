@@ -146,6 +146,11 @@ namespace vesicle_iga
     KnotVector
     h_refined(const unsigned int times = 1) const;
 
+    /// Every other breakpoint removed (z_0, z_2, z_4, ... and z_m, each
+    /// kept breakpoint with its continuity): a space nested in this one,
+    /// the next coarser level of the spline multigrid.
+    KnotVector
+    coarsened() const;
     /// Raise the degree by @p by keeping the continuity at every existing
     /// breakpoint (knot multiplicities raised by @p by).
     KnotVector
@@ -167,6 +172,17 @@ namespace vesicle_iga
     unsigned int              n_functions = 0;
     std::vector<std::vector<std::array<double, 8>>> C;
   };
+
+  /**
+   * For nested spaces (the breakpoints of @p coarse are breakpoints of
+   * @p fine with at most the same continuity): P with
+   * N^coarse_j = sum_i P_ij N^fine_i (knot insertion), as dense rows
+   * P[i][j], computed by interpolating each coarse function at the Greville
+   * points of the fine space (exact, the coarse function lies in the fine
+   * space); entries below 1e-14 are set to zero.
+   */
+  std::vector<std::vector<double>>
+  prolongation_matrix(const KnotVector &coarse, const KnotVector &fine);
 
   /// Maximal supported degree (the extraction rows are stored in arrays of
   /// this size + 1).

@@ -6,6 +6,7 @@
 
 #include <vesicle_iga/spline/nurbs_geometry.h>
 #include <vesicle_iga/spline/spline_space.h>
+#include <vesicle_iga/spline/sum_factorization.h>
 
 #include <array>
 #include <memory>
@@ -42,12 +43,16 @@ namespace vesicle_iga
     /**
      * @p max_derivative: 0..3, the highest derivative order that is needed;
      * higher orders cost more. @p geometry may be null (identity map); if it
-     * is given it must be defined on @p space.
+     * is given it must be defined on @p space. Without @p with_shape_tables
+     * (and without geometry) only the univariate factors and JxW are
+     * computed: the input of sum factorisation, a small fraction of the
+     * cost of the full tables.
      */
     SplineCellValues(const SplineSpace<dim>                   &space,
                      std::shared_ptr<const NurbsGeometry<dim>> geometry,
                      const Quadrature<1>                      &quadrature_1d,
-                     const unsigned int                        max_derivative);
+                     const unsigned int                        max_derivative,
+                     const bool with_shape_tables = true);
 
     void
     reinit(const unsigned int element);
@@ -129,6 +134,17 @@ namespace vesicle_iga
     {
       return normals[q];
     }
+    /// The univariate factors of the basis on the current element (axis-
+    /// aligned boxes only: without a geometry the tensor-product basis and
+    /// its physical derivatives factor direction by direction).
+    const TensorProductFactors<dim> &
+    tensor_product_factors() const
+    {
+      Assert(!geometry,
+             ExcMessage("The basis factors only without a geometry map."));
+      return univariate;
+    }
+
     /// Element metric tensor G of spec eq. (N1), parent element [-1,1]^d.
     const Tensor<2, dim> &
     metric_tensor(const unsigned int q) const
@@ -167,6 +183,8 @@ namespace vesicle_iga
     const SplineSpace<dim>                   &space;
     std::shared_ptr<const NurbsGeometry<dim>> geometry;
     const unsigned int                        order;
+    const bool                                shape_tables;
+    TensorProductFactors<dim>                 univariate;
     std::vector<double>                       q_weights;
     std::vector<double>                       unit_weight{1.};
 

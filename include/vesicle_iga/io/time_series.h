@@ -1,0 +1,41 @@
+#pragma once
+
+#include <deal.II/base/mpi.h>
+
+#include <fstream>
+#include <string>
+#include <vector>
+
+namespace vesicle_iga
+{
+  /**
+   * A CSV time series written by rank 0 (time-series.csv of the flow
+   * studies): a header naming the columns, then one row per accepted step
+   * whose first column is the integer step number. Every row is flushed at
+   * once, so a run that is killed keeps every row written so far. On a
+   * restart from step n the rows up to n are kept and the file continues.
+   */
+  class TimeSeriesWriter
+  {
+  public:
+    /// @p restart_step < 0: a new file.
+    TimeSeriesWriter(const std::string              &filename,
+                     const std::vector<std::string> &columns,
+                     const MPI_Comm                  communicator,
+                     const long                      restart_step = -1);
+
+    /// One value per column; the first is the step number.
+    void
+    add_row(const std::vector<double> &values);
+
+    const std::vector<std::string> &
+    columns() const
+    {
+      return names;
+    }
+
+  private:
+    std::vector<std::string> names;
+    std::ofstream            file;
+  };
+} // namespace vesicle_iga

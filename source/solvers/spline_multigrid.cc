@@ -1,0 +1,365 @@
+#include <deal.II/base/mpi.h>
+
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/trilinos_precondition.h>
+#include <deal.II/lac/trilinos_solver.h>
+
+#include <vesicle_iga/solvers/spline_multigrid.h>
+
+#include <sstream>
+
+namespace vesicle_iga
+{
+  void
+  SplineMultigridParameters::declare(ParameterHandler  &prm,
+                                     const std::string &default_smoother)
+  {
+    prm.enter_subsection("Multigrid");
+    prm.declare_entry("Smoother",
+                      default_smoother,
+                      Patterns::Selection("ssor|chebyshev|ilu"),
+                      "Smoother on every level but the coarsest: ssor "
+                      "(symmetric Gauss-Seidel on each rank), chebyshev "
+                      "(degree 'Sweeps' polynomial in the Jacobi-scaled "
+                      "matrix) or ilu (ILU(0) on each rank).");
+    prm.declare_entry("Sweeps",
+                      "2",
+                      Patterns::Integer(1, 20),
+                      "Pre- and post-smoothing sweeps (ssor), or the "
+                      "Chebyshev degree.");
+    prm.declare_entry("Coarse size",
+                      "4000",
+                      Patterns::Integer(10),
+                      "Coarsen until a level has at most this many unknowns "
+                      "(or no direction can be coarsened); that level is "
+                      "solved by sparse LU.");
+    prm.declare_entry("SSOR relaxation",
+                      "1.0",
+                      Patterns::Double(0.1, 1.9),
+                      "Relaxation factor omega of the SSOR smoother.");
+    prm.leave_subsection();
+  }
+
+
+  void
+  SplineMultigridParameters::parse(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Multigrid");
+    smoother        = prm.get("Smoother");
+    sweeps          = prm.get_integer("Sweeps");
+    coarse_size     = prm.get_integer("Coarse size");
+    ssor_relaxation = prm.get_double("SSOR relaxation");
+    prm.leave_subsection();
+  }
+
+
+  template <int dim>
+  struct SplineMultigrid<dim>::Level
+  {
+    std::array<KnotVector, dim>   knot_vectors;
+    std::array<unsigned int, dim> n_basis;
+    /// Level unknown of each natural basis index (invalid: not kept).
+    std::vector<types::global_dof_index> index;
+    types::global_dof_index              n_unknowns = 0;
+    IndexSet                             owned;
+    /// From the next coarser level to this one (empty on level 0).
+    TrilinosWrappers::SparseMatrix                      prolongation;
+    TrilinosWrappers::SparseMatrix                      galerkin_matrix;
+    const TrilinosWrappers::SparseMatrix               *matrix = nullptr;
+    std::unique_ptr<TrilinosWrappers::PreconditionBase> smoother;
+    std::unique_ptr<SolverControl>                      direct_control;
+    std::unique_ptr<TrilinosWrappers::SolverDirect>     direct;
+    mutable TrilinosWrappers::MPI::Vector               x, b, r, t;
+
+    std::array<unsigned int, dim>
+    multi_index(unsigned int i) const
+    {
+      std::array<unsigned int, dim> m;
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          m[d] = i % n_basis[d];
+          i /= n_basis[d];
+        }
+      return m;
+    }
+    unsigned int
+    n_natural() const
+    {
+      unsigned int n = 1;
+      for (unsigned int d = 0; d < dim; ++d)
+        n *= n_basis[d];
+      return n;
+    }
+  };
+
+
+  template <int dim>
+  SplineMultigrid<dim>::SplineMultigrid(
+    const SplineDofHandler<dim>     &dofs,
+    const AffineConstraints<double> &constraints,
+    const SplineMultigridParameters &parameters)
+    : prm(parameters)
+    , communicator(dofs.get_mesh().get_communicator())
+  {
+    AssertThrow(dofs.n_components() == 1,
+                ExcMessage("SplineMultigrid: scalar fields only."));
+    const SplineSpace<dim> &space = dofs.get_space();
+
+    // The fine level: the dof handler's numbering; constrained functions
+    // (gathered from all ranks, natural numbering) are not level unknowns.
+    auto fine          = std::make_unique<Level>();
+    fine->knot_vectors = space.knot_vectors();
+    for (unsigned int d = 0; d < dim; ++d)
+      fine->n_basis[d] = space.knot_vector(d).n_basis();
+    fine->index.resize(space.n_basis());
+    fine->owned      = dofs.locally_owned_dofs();
+    fine->n_unknowns = dofs.n_dofs();
+    std::vector<unsigned int> constrained_here;
+    for (unsigned int i = 0; i < space.n_basis(); ++i)
+      {
+        const auto g   = dofs.dof_index(i);
+        fine->index[i] = g;
+        if (fine->owned.is_element(g) && constraints.is_constrained(g))
+          {
+            AssertThrow(!constraints.is_inhomogeneously_constrained(g)
+                          && constraints.get_constraint_entries(g)->empty(),
+                        ExcMessage("SplineMultigrid: only homogeneous "
+                                   "Dirichlet constraints (x_i = 0)."));
+            constrained_here.push_back(i);
+          }
+      }
+    std::vector<bool> constrained(space.n_basis(), false);
+    for (const auto &v :
+         Utilities::MPI::all_gather(communicator, constrained_here))
+      for (const unsigned int i : v)
+        constrained[i] = true;
+
+    std::vector<std::unique_ptr<Level>> top_down;
+    top_down.push_back(std::move(fine));
+    const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(communicator);
+    const unsigned int rank    = Utilities::MPI::this_mpi_process(communicator);
+    while (true)
+      {
+        Level       &f      = *top_down.back();
+        unsigned int n_kept = 0;
+        for (unsigned int i = 0; i < f.n_natural(); ++i)
+          n_kept += constrained[i] ? 0 : 1;
+        if (n_kept <= prm.coarse_size)
+          break;
+        auto c         = std::make_unique<Level>();
+        bool coarsened = false;
+        std::array<std::vector<std::vector<double>>, dim> P1;
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            const KnotVector &kv = f.knot_vectors[d];
+            c->knot_vectors[d]   = kv.n_elements() >= 4 ? kv.coarsened() : kv;
+            coarsened            = coarsened || kv.n_elements() >= 4;
+            c->n_basis[d]        = c->knot_vectors[d].n_basis();
+            P1[d]                = prolongation_matrix(c->knot_vectors[d], kv);
+          }
+        if (!coarsened)
+          break;
+        // Non-zero columns of every univariate row.
+        std::array<std::vector<std::vector<std::pair<unsigned int, double>>>,
+                   dim>
+          nz;
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            nz[d].resize(P1[d].size());
+            for (unsigned int i = 0; i < P1[d].size(); ++i)
+              for (unsigned int j = 0; j < P1[d][i].size(); ++j)
+                if (P1[d][i][j] != 0.)
+                  nz[d][i].emplace_back(j, P1[d][i][j]);
+          }
+        // The row of P for fine natural index I: tensor product.
+        const auto for_row = [&](const unsigned int I, const auto &action) {
+          const auto                    m = f.multi_index(I);
+          std::array<unsigned int, dim> k{};
+          while (true)
+            {
+              unsigned int J = 0, stride = 1;
+              double       v = 1;
+              for (unsigned int d = 0; d < dim; ++d)
+                {
+                  J += nz[d][m[d]][k[d]].first * stride;
+                  v *= nz[d][m[d]][k[d]].second;
+                  stride *= c->n_basis[d];
+                }
+              action(J, v);
+              unsigned int d = 0;
+              for (; d < dim; ++d)
+                if (++k[d] < nz[d][m[d]].size())
+                  break;
+                else
+                  k[d] = 0;
+              if (d == dim)
+                break;
+            }
+        };
+        std::vector<bool> coarse_constrained(c->n_natural(), false);
+        for (unsigned int I = 0; I < f.n_natural(); ++I)
+          if (constrained[I])
+            for_row(I, [&](const unsigned int J, const double) {
+              coarse_constrained[J] = true;
+            });
+        // Level unknowns: the kept functions in natural order, owned in
+        // contiguous blocks.
+        c->index.assign(c->n_natural(), numbers::invalid_dof_index);
+        for (unsigned int J = 0; J < c->n_natural(); ++J)
+          if (!coarse_constrained[J])
+            c->index[J] = c->n_unknowns++;
+        c->owned.set_size(c->n_unknowns);
+        c->owned.add_range(c->n_unknowns * rank / n_ranks,
+                           c->n_unknowns * (rank + 1) / n_ranks);
+        c->owned.compress();
+
+        // Prolongation from c to f (rows: f's owned unknowns).
+        DynamicSparsityPattern sp(f.n_unknowns, c->n_unknowns, f.owned);
+        for (unsigned int I = 0; I < f.n_natural(); ++I)
+          if (!constrained[I] && f.owned.is_element(f.index[I]))
+            for_row(I, [&](const unsigned int J, const double) {
+              if (!coarse_constrained[J])
+                sp.add(f.index[I], c->index[J]);
+            });
+        f.prolongation.reinit(f.owned, c->owned, sp, communicator);
+        for (unsigned int I = 0; I < f.n_natural(); ++I)
+          if (!constrained[I] && f.owned.is_element(f.index[I]))
+            for_row(I, [&](const unsigned int J, const double v) {
+              if (!coarse_constrained[J])
+                f.prolongation.set(f.index[I], c->index[J], v);
+            });
+        f.prolongation.compress(VectorOperation::insert);
+
+        constrained = coarse_constrained;
+        top_down.push_back(std::move(c));
+      }
+    // Store coarsest first; each level's prolongation maps the level below
+    // (index l - 1) into it.
+    for (auto it = top_down.rbegin(); it != top_down.rend(); ++it)
+      levels.push_back(std::move(*it));
+    for (auto &l : levels)
+      {
+        l->x.reinit(l->owned, communicator);
+        l->b.reinit(l->owned, communicator);
+        l->r.reinit(l->owned, communicator);
+        l->t.reinit(l->owned, communicator);
+      }
+  }
+
+
+  template <int dim>
+  SplineMultigrid<dim>::~SplineMultigrid() = default;
+
+
+  template <int dim>
+  void
+  SplineMultigrid<dim>::initialize(const TrilinosWrappers::SparseMatrix &A)
+  {
+    levels.back()->matrix = &A;
+    for (unsigned int l = levels.size() - 1; l > 0; --l)
+      {
+        Level                         &f = *levels[l];
+        TrilinosWrappers::SparseMatrix AP;
+        f.matrix->mmult(AP, f.prolongation);
+        f.prolongation.Tmmult(levels[l - 1]->galerkin_matrix, AP);
+        levels[l - 1]->matrix = &levels[l - 1]->galerkin_matrix;
+      }
+    for (unsigned int l = 1; l < levels.size(); ++l)
+      {
+        Level &L = *levels[l];
+        if (prm.smoother == "ssor")
+          {
+            auto s = std::make_unique<TrilinosWrappers::PreconditionSSOR>();
+            s->initialize(*L.matrix,
+                          TrilinosWrappers::PreconditionSSOR::AdditionalData(
+                            prm.ssor_relaxation));
+            L.smoother = std::move(s);
+          }
+        else if (prm.smoother == "ilu")
+          {
+            auto s = std::make_unique<TrilinosWrappers::PreconditionILU>();
+            s->initialize(*L.matrix,
+                          TrilinosWrappers::PreconditionILU::AdditionalData(0));
+            L.smoother = std::move(s);
+          }
+        else
+          {
+            auto s
+              = std::make_unique<TrilinosWrappers::PreconditionChebyshev>();
+            TrilinosWrappers::PreconditionChebyshev::AdditionalData data;
+            data.degree           = prm.sweeps;
+            data.eigenvalue_ratio = 30;
+            s->initialize(*L.matrix, data);
+            L.smoother = std::move(s);
+          }
+      }
+    Level &C         = *levels[0];
+    C.direct_control = std::make_unique<SolverControl>(1, 0);
+    C.direct
+      = std::make_unique<TrilinosWrappers::SolverDirect>(*C.direct_control);
+    C.direct->initialize(*C.matrix);
+  }
+
+
+  template <int dim>
+  void
+  SplineMultigrid<dim>::v_cycle(const unsigned int                   l,
+                                TrilinosWrappers::MPI::Vector       &x,
+                                const TrilinosWrappers::MPI::Vector &b) const
+  {
+    const Level &L = *levels[l];
+    if (l == 0)
+      {
+        L.direct->solve(x, b);
+        return;
+      }
+    const unsigned int sweeps = prm.smoother != "chebyshev" ? prm.sweeps : 1;
+    const auto         smooth = [&]() {
+      for (unsigned int s = 0; s < sweeps; ++s)
+        {
+          L.matrix->vmult(L.r, x);
+          L.r.sadd(-1., 1., b);
+          L.smoother->vmult(L.t, L.r);
+          x += L.t;
+        }
+    };
+    x = 0;
+    smooth();
+    // Coarse-grid correction.
+    const Level &C = *levels[l - 1];
+    L.matrix->vmult(L.r, x);
+    L.r.sadd(-1., 1., b);
+    L.prolongation.Tvmult(C.b, L.r);
+    v_cycle(l - 1, C.x, C.b);
+    L.prolongation.vmult(L.t, C.x);
+    x += L.t;
+    smooth();
+  }
+
+
+  template <int dim>
+  void
+  SplineMultigrid<dim>::vmult(TrilinosWrappers::MPI::Vector       &dst,
+                              const TrilinosWrappers::MPI::Vector &src) const
+  {
+    v_cycle(levels.size() - 1, dst, src);
+  }
+
+
+  template <int dim>
+  std::string
+  SplineMultigrid<dim>::description() const
+  {
+    std::ostringstream s;
+    s << "spline multigrid, " << levels.size() << " levels (unknowns";
+    for (auto it = levels.rbegin(); it != levels.rend(); ++it)
+      s << ' ' << (*it)->n_unknowns;
+    s << "), " << prm.smoother << '(' << prm.sweeps << "), KLU on the "
+      << "coarsest";
+    return s.str();
+  }
+
+  template class SplineMultigrid<2>;
+  template class SplineMultigrid<3>;
+} // namespace vesicle_iga
