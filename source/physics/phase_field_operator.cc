@@ -173,7 +173,18 @@ namespace vesicle_iga
     std::vector<const typename SF::AtomPair *> pointers;
     for (const auto &p : pairs)
       pointers.push_back(&p);
-    kernel.integrate_matrix(pointers, A);
+    // The tangent of an energy is symmetric (bending, area); the
+    // flexoelectric one (E20) is not.
+    bool symmetric = true;
+    for (unsigned int q = 0; q < nq && symmetric; ++q)
+      for (unsigned int k = 0; k < nf && symmetric; ++k)
+        for (unsigned int l = k + 1; l < nf; ++l)
+          if (K[q][k][l] != K[q][l][k])
+            {
+              symmetric = false;
+              break;
+            }
+    kernel.integrate_matrix(pointers, A, symmetric);
   }
 
 

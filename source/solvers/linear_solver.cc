@@ -15,7 +15,8 @@ namespace vesicle_iga
   LinearSolverParameters::declare(ParameterHandler  &prm,
                                   const std::string &default_method,
                                   const std::string &default_tolerance,
-                                  const std::string &default_smoother)
+                                  const std::string &default_smoother,
+                                  const std::string &default_sweeps)
   {
     prm.enter_subsection("Linear solver");
     prm.declare_entry("Method",
@@ -39,7 +40,9 @@ namespace vesicle_iga
                       Patterns::Integer(1),
                       "Iteration limit of the Krylov method; reaching it is "
                       "an error.");
-    SplineMultigridParameters::declare(prm, default_smoother);
+    SplineMultigridParameters::declare(prm,
+                                       default_smoother,
+                                       default_sweeps);
     prm.leave_subsection();
   }
 
@@ -84,7 +87,6 @@ namespace vesicle_iga
                         parameters.method,
                         "a method without multigrid for this study (the "
                         "spline multigrid serves the phase-field solvers)");
-            multigrid->initialize(A);
           }
         else if (parameters.method == "gmres-ilu")
           {

@@ -65,6 +65,7 @@ namespace vesicle_iga
         multigrid = std::make_unique<SplineMultigrid<dim>>(dof_handler,
                                                            homogeneous,
                                                            solver.multigrid);
+        multigrid->initialize(matrix);
       }
     const auto result = solve_linear_system(
       solver, matrix, x, rhs, constraints_, multigrid.get());

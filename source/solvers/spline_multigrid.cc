@@ -13,7 +13,8 @@ namespace vesicle_iga
 {
   void
   SplineMultigridParameters::declare(ParameterHandler  &prm,
-                                     const std::string &default_smoother)
+                                     const std::string &default_smoother,
+                                     const std::string &default_sweeps)
   {
     prm.enter_subsection("Multigrid");
     prm.declare_entry("Smoother",
@@ -24,16 +25,17 @@ namespace vesicle_iga
                       "(degree 'Sweeps' polynomial in the Jacobi-scaled "
                       "matrix) or ilu (ILU(0) on each rank).");
     prm.declare_entry("Sweeps",
-                      "2",
+                      default_sweeps,
                       Patterns::Integer(1, 20),
                       "Pre- and post-smoothing sweeps (ssor), or the "
                       "Chebyshev degree.");
     prm.declare_entry("Coarse size",
-                      "4000",
-                      Patterns::Integer(10),
+                      "0",
+                      Patterns::Integer(0),
                       "Coarsen until a level has at most this many unknowns "
                       "(or no direction can be coarsened); that level is "
-                      "solved by sparse LU.");
+                      "solved by sparse LU. 0: 4000 in 2D, 1000 in 3D (the "
+                      "LU of a 3D spline matrix fills in much more).");
     prm.declare_entry("SSOR relaxation",
                       "1.0",
                       Patterns::Double(0.1, 1.9),
@@ -145,7 +147,8 @@ namespace vesicle_iga
         unsigned int n_kept = 0;
         for (unsigned int i = 0; i < f.n_natural(); ++i)
           n_kept += constrained[i] ? 0 : 1;
-        if (n_kept <= prm.coarse_size)
+        if (n_kept <= (prm.coarse_size > 0 ? prm.coarse_size :
+                       (dim == 2 ? 4000u : 1000u)))
           break;
         auto c         = std::make_unique<Level>();
         bool coarsened = false;

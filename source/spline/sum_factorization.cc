@@ -31,6 +31,24 @@ namespace vesicle_iga
         outer *= e[c];
       const unsigned int n = e[d];
       y.assign(std::size_t(outer) * rows * stride, 0.);
+      if (stride == 1)
+        {
+          // Along the fastest index: short dot products per line.
+          for (unsigned int o = 0; o < outer; ++o)
+            {
+              const double *in  = &x[std::size_t(o) * n];
+              double       *out = &y[std::size_t(o) * rows];
+              for (unsigned int k = 0; k < rows; ++k)
+                {
+                  double sum = 0;
+                  for (unsigned int j = 0; j < n; ++j)
+                    sum += M[k * n + j] * in[j];
+                  out[k] = sum;
+                }
+            }
+          e[d] = rows;
+          return;
+        }
       for (unsigned int o = 0; o < outer; ++o)
         for (unsigned int k = 0; k < rows; ++k)
           {
@@ -113,7 +131,7 @@ namespace vesicle_iga
                                   const std::array<bool, n_atoms> &wanted,
                                   AtomValues                      &out) const
   {
-    std::vector<double> x, y;
+    thread_local std::vector<double> x, y;
     for (unsigned int a = 0; a < n_atoms; ++a)
       {
         if (!wanted[a])
@@ -139,8 +157,7 @@ namespace vesicle_iga
                                    const std::array<bool, n_atoms> &used,
                                    Vector<double>                  &rhs) const
   {
-    std::vector<double> x, y;
-    std::vector<double> Mt;
+    thread_local std::vector<double> x, y, Mt;
     for (unsigned int a = 0; a < n_atoms; ++a)
       {
         if (!used[a])
@@ -167,7 +184,8 @@ namespace vesicle_iga
   void
   SumFactorization<dim>::integrate_matrix(
     const std::vector<const AtomPair *> &pairs,
-    FullMatrix<double>                  &A) const
+    FullMatrix<double>                  &A,
+    const bool                           symmetric) const
   {
     if (pairs.empty())
       return;
@@ -213,19 +231,23 @@ namespace vesicle_iga
     const unsigned int n0 = f.n_basis[0], m0 = f.n_points[0];
     const unsigned int nn0 = n0 * n0;
     // Last stage, shared by all dim: A[(i0, I), (j0, J)] +=
-    //   sum_q0 B0[q0][i0 j0] T[q0][(I, J)], with the outer multi-indices I,
-    //   J of size nI, and T stored as T[q0][I * nI + J].
+    //   sum_q0 B0[q0][i0 j0] T[q0][index(I, J)], with the outer
+    //   multi-indices I, J of size nI and T of stride @p stride per q0.
     const auto last_stage = [&](const double              *B0,
                                 const std::vector<double> &T,
-                                const unsigned int         nI) {
-      std::vector<double> tmp(nn0);
+                                const unsigned int         nI,
+                                const std::size_t          stride,
+                                const auto                &index) {
+      double tmp[64];
+      AssertIndexRange(nn0, 65);
       for (unsigned int I = 0; I < nI; ++I)
-        for (unsigned int J = 0; J < nI; ++J)
+        for (unsigned int J = symmetric ? I : 0; J < nI; ++J)
           {
-            std::fill(tmp.begin(), tmp.end(), 0.);
+            std::fill(tmp, tmp + nn0, 0.);
+            const std::size_t IJ = index(I, J);
             for (unsigned int q = 0; q < m0; ++q)
               {
-                const double t = T[(std::size_t(q) * nI + I) * nI + J];
+                const double t = T[q * stride + IJ];
                 if (t == 0.)
                   continue;
                 const double *b = B0 + q * nn0;
@@ -235,6 +257,11 @@ namespace vesicle_iga
             for (unsigned int i0 = 0; i0 < n0; ++i0)
               for (unsigned int j0 = 0; j0 < n0; ++j0)
                 A(I * n0 + i0, J * n0 + j0) += tmp[i0 * n0 + j0];
+            // The block (J, I) of a symmetric matrix is the transpose.
+            if (symmetric && J != I)
+              for (unsigned int i0 = 0; i0 < n0; ++i0)
+                for (unsigned int j0 = 0; j0 < n0; ++j0)
+                  A(J * n0 + j0, I * n0 + i0) += tmp[i0 * n0 + j0];
           }
     };
 
@@ -268,8 +295,14 @@ namespace vesicle_iga
                         t[k] += b[k] * c;
                     }
               }
-            // T1 is [q0][i1 n1 + j1] = [q0][I nI + J] with nI = n1.
-            last_stage(product(0, k0[0], k0[1]), T1, n1);
+            // T1 is [q0][i1 n1 + j1].
+            last_stage(product(0, k0[0], k0[1]),
+                       T1,
+                       n1,
+                       nn1,
+                       [n1](const unsigned int I, const unsigned int J) {
+                         return std::size_t(I) * n1 + J;
+                       });
             g = e;
           }
       }
@@ -280,7 +313,7 @@ namespace vesicle_iga
         const unsigned int  nn1 = n1 * n1, nn2 = n2 * n2;
         const unsigned int  nI = n1 * n2;
         std::vector<double> T1(std::size_t(m0) * m1 * nn2);
-        std::vector<double> T2(std::size_t(m0) * nI * nI);
+        std::vector<double> T2(std::size_t(m0) * nn1 * nn2);
         for (std::size_t g = 0; g < sorted.size();)
           {
             const auto k0 = key(sorted[g]);
@@ -314,34 +347,37 @@ namespace vesicle_iga
                             t[k] += b[k] * c;
                         }
                   }
-                // T2[q0][(i1 + n1 i2) nI + (j1 + n1 j2)] +=
+                // T2[q0][(i1 n1 + j1) nn2 + (i2 n2 + j2)] +=
                 //   sum_q1 B1[q1][i1 j1] T1[q0 + m0 q1][i2 j2]
+                // (inner loops over contiguous (i2 j2): vectorised).
                 const double *B1 = product(1, k1[2], k1[3]);
                 for (unsigned int q0 = 0; q0 < m0; ++q0)
                   for (unsigned int q1 = 0; q1 < m1; ++q1)
                     {
                       const double *t1 = &T1[std::size_t(q0 + m0 * q1) * nn2];
                       const double *b  = B1 + q1 * nn1;
-                      double       *t2 = &T2[std::size_t(q0) * nI * nI];
-                      for (unsigned int i2 = 0; i2 < n2; ++i2)
-                        for (unsigned int j2 = 0; j2 < n2; ++j2)
-                          {
-                            const double c = t1[i2 * n2 + j2];
-                            if (c == 0.)
-                              continue;
-                            for (unsigned int i1 = 0; i1 < n1; ++i1)
-                              {
-                                double *row
-                                  = t2 + (i1 + n1 * i2) * nI + n1 * j2;
-                                const double *bi = b + i1 * n1;
-                                for (unsigned int j1 = 0; j1 < n1; ++j1)
-                                  row[j1] += bi[j1] * c;
-                              }
-                          }
+                      double       *t2 = &T2[std::size_t(q0) * nn1 * nn2];
+                      for (unsigned int k1 = 0; k1 < nn1; ++k1)
+                        {
+                          const double c = b[k1];
+                          if (c == 0.)
+                            continue;
+                          double *row = t2 + k1 * nn2;
+                          for (unsigned int k2 = 0; k2 < nn2; ++k2)
+                            row[k2] += c * t1[k2];
+                        }
                     }
                 e = h;
               }
-            last_stage(product(0, k0[0], k0[1]), T2, nI);
+            last_stage(product(0, k0[0], k0[1]),
+                       T2,
+                       nI,
+                       std::size_t(nn1) * nn2,
+                       [n1, n2, nn2](const unsigned int I, const unsigned int J) {
+                         const unsigned int i1 = I % n1, i2 = I / n1;
+                         const unsigned int j1 = J % n1, j2 = J / n1;
+                         return std::size_t(i1 * n1 + j1) * nn2 + i2 * n2 + j2;
+                       });
             g = e;
           }
       }

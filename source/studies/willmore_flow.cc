@@ -705,7 +705,8 @@ namespace vesicle_iga
         // GMRES with one V-cycle of the spline multigrid (ILU(0) smoother):
         // robust for the fourth-order Newton matrix at large dt, where
         // ILU and AMG alone need hundreds of iterations (doc/willmore.md).
-        LinearSolverParameters::declare(prm, "gmres-mg", "1e-8", "ilu");
+        LinearSolverParameters::declare(
+          prm, "gmres-mg", "1e-8", "ilu", "1");
         // Spec section 2.5 / 6.2: dt_0 = 1e-10, dt_max = 1.
         StepSizeController::Parameters::declare(prm, "1e-10", "1");
         VesicleShape<2>::declare(prm);

@@ -42,7 +42,8 @@ namespace vesicle_iga
     declare(ParameterHandler  &prm,
             const std::string &default_method,
             const std::string &default_tolerance = "1e-12",
-            const std::string &default_smoother  = "ssor");
+            const std::string &default_smoother  = "ssor",
+            const std::string &default_sweeps    = "2");
     void
     parse(ParameterHandler &prm);
   };
@@ -54,7 +55,8 @@ namespace vesicle_iga
   };
 
   /// Solve A x = b (relative tolerance), then set the constrained entries.
-  /// The multigrid methods need @p multigrid (initialized here with A).
+  /// The multigrid methods need @p multigrid, initialized by the caller
+  /// (with A, or with an earlier matrix when the caller reuses it).
   LinearSolveResult
   solve_linear_system(const LinearSolverParameters         &parameters,
                       const TrilinosWrappers::SparseMatrix &A,

@@ -42,7 +42,8 @@ namespace vesicle_iga
 
     static void
     declare(ParameterHandler  &prm,
-            const std::string &default_smoother = "ssor");
+            const std::string &default_smoother = "ssor",
+            const std::string &default_sweeps   = "2");
     void
     parse(ParameterHandler &prm);
   };

@@ -106,9 +106,13 @@ namespace vesicle_iga
               Vector<double>                  &rhs) const;
 
     /// matrix_ij += sum over the pairs of sum_q D^a N_i C(q) D^b N_j.
+    /// With @p symmetric (the caller knows that the sum is a symmetric
+    /// matrix: every pair (a, b, C) has its partner (b, a, C)) only the
+    /// blocks on and above the diagonal are contracted and then mirrored.
     void
     integrate_matrix(const std::vector<const AtomPair *> &pairs,
-                     FullMatrix<double>                  &matrix) const;
+                     FullMatrix<double>                  &matrix,
+                     const bool                           symmetric = false) const;
 
   private:
     const TensorProductFactors<dim> &f;
