@@ -53,6 +53,19 @@ namespace vesicle_iga
                       "Ratio of consecutive element lengths per direction "
                       "(1: uniform; 1.1: each element 10% longer than the "
                       "previous one).");
+    prm.declare_entry("Core lower corner",
+                      "",
+                      Patterns::Anything(),
+                      "With 'Core upper corner': a refined core box. Each "
+                      "direction then has 'Elements' equal elements inside "
+                      "the core and elements growing by the factor "
+                      "'Grading' (>= 1) from the core to the faces (sized "
+                      "to end exactly on the faces, never shorter than the "
+                      "core elements). Empty: no core.");
+    prm.declare_entry("Core upper corner",
+                      "",
+                      Patterns::Anything(),
+                      "Upper corner of the refined core box.");
     for (const char *d : {"x", "y", "z"})
       prm.declare_entry(std::string("Breakpoints ") + d,
                         "",
@@ -110,6 +123,43 @@ namespace vesicle_iga
                     prm.get("Grading"),
                     "positive ratios");
       }
+    const std::string core_lower_text = prm.get("Core lower corner"),
+                      core_upper_text = prm.get("Core upper corner");
+    core_lower.clear();
+    core_upper.clear();
+    check_input(Utilities::trim(core_lower_text).empty()
+                  == Utilities::trim(core_upper_text).empty(),
+                "Mesh/Core upper corner",
+                core_upper_text,
+                "given together with 'Core lower corner' (or both empty)");
+    if (!Utilities::trim(core_lower_text).empty())
+      {
+        core_lower = per_direction(parse_double_list(core_lower_text,
+                                                     "Mesh/Core lower corner"),
+                                   dim,
+                                   "Mesh/Core lower corner",
+                                   core_lower_text);
+        core_upper = per_direction(parse_double_list(core_upper_text,
+                                                     "Mesh/Core upper corner"),
+                                   dim,
+                                   "Mesh/Core upper corner",
+                                   core_upper_text);
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            check_input(lower[d] <= core_lower[d]
+                          && core_lower[d] < core_upper[d]
+                          && core_upper[d] <= upper[d],
+                        "Mesh/Core upper corner",
+                        core_upper_text,
+                        "a core box inside the domain: lower corner <= core "
+                        "lower corner < core upper corner <= upper corner");
+            check_input(grading[d] >= 1,
+                        "Mesh/Grading",
+                        prm.get("Grading"),
+                        "ratios >= 1 with a core box (elements grow "
+                        "towards the faces)");
+          }
+      }
     breakpoints.assign(dim, {});
     for (unsigned int d = 0; d < dim; ++d)
       {
@@ -140,7 +190,43 @@ namespace vesicle_iga
     for (unsigned int d = 0; d < dim; ++d)
       {
         std::vector<double> z = breakpoints[d];
-        if (z.empty())
+        if (z.empty() && !core_lower.empty())
+          {
+            // Uniform core, then sizes h q^k towards each face: as many as
+            // fit, scaled up to end exactly on the face.
+            const unsigned int n       = elements[d];
+            const double       h       = (core_upper[d] - core_lower[d]) / n;
+            const auto         outward = [&](const double length) {
+              std::vector<double> sizes;
+              double              sum = 0, s = h;
+              while (true)
+                {
+                  s *= grading[d];
+                  if (sum + s > length * (1 + 1e-12))
+                    break;
+                  sizes.push_back(s);
+                  sum += s;
+                }
+              if (sizes.empty() && length > 1e-12 * h)
+                sizes.push_back(length);
+              else
+                for (double &x : sizes)
+                  x *= length / sum;
+              return sizes;
+            };
+            const auto left  = outward(core_lower[d] - lower[d]);
+            const auto right = outward(upper[d] - core_upper[d]);
+            z.push_back(lower[d]);
+            for (auto it = left.rbegin(); it != left.rend(); ++it)
+              z.push_back(z.back() + *it);
+            z.back() = core_lower[d];
+            for (unsigned int i = 1; i <= n; ++i)
+              z.push_back(core_lower[d] + i * h);
+            for (const double x : right)
+              z.push_back(z.back() + x);
+            z.back() = upper[d];
+          }
+        else if (z.empty())
           {
             // Geometric grading: lengths proportional to q^i.
             const unsigned int n     = elements[d];

@@ -373,7 +373,8 @@ namespace vesicle_iga
                        T2,
                        nI,
                        std::size_t(nn1) * nn2,
-                       [n1, n2, nn2](const unsigned int I, const unsigned int J) {
+                       [n1, n2, nn2](const unsigned int I,
+                                     const unsigned int J) {
                          const unsigned int i1 = I % n1, i2 = I / n1;
                          const unsigned int j1 = J % n1, j2 = J / n1;
                          return std::size_t(i1 * n1 + j1) * nn2 + i2 * n2 + j2;

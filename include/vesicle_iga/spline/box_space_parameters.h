@@ -12,7 +12,8 @@ namespace vesicle_iga
   /**
    * The spline space of an axis-aligned box (subsection "Mesh" of a study):
    * the domain, the breakpoints per direction (uniform, geometrically
-   * graded, or given explicitly) and the periodic directions. Degree and
+   * graded, uniform in a core box and graded outside it, or given
+   * explicitly) and the periodic directions. Degree and
    * continuity are chosen by the study. On a box the breakpoints are in
    * physical units: the geometry map is the identity.
    */
@@ -22,7 +23,9 @@ namespace vesicle_iga
     std::vector<unsigned int>        elements;
     std::vector<double>              grading;
     std::vector<std::vector<double>> breakpoints;
-    std::vector<bool>                periodic;
+    /// Refined core box (empty: none).
+    std::vector<double> core_lower, core_upper;
+    std::vector<bool>   periodic;
 
     static void
     declare(ParameterHandler  &prm,

@@ -112,7 +112,7 @@ namespace vesicle_iga
     void
     integrate_matrix(const std::vector<const AtomPair *> &pairs,
                      FullMatrix<double>                  &matrix,
-                     const bool                           symmetric = false) const;
+                     const bool symmetric = false) const;
 
   private:
     const TensorProductFactors<dim> &f;
