@@ -40,9 +40,7 @@ namespace vesicle_iga
                       Patterns::Integer(1),
                       "Iteration limit of the Krylov method; reaching it is "
                       "an error.");
-    SplineMultigridParameters::declare(prm,
-                                       default_smoother,
-                                       default_sweeps);
+    SplineMultigridParameters::declare(prm, default_smoother, default_sweeps);
     prm.leave_subsection();
   }
 

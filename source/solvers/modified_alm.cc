@@ -37,7 +37,10 @@ namespace vesicle_iga
 
 
   ModifiedALM::Result
-  ModifiedALM::step(const StepSolver &solve, const double v_n, const double a_n)
+  ModifiedALM::step(const StepSolver       &solve,
+                    const double            v_n,
+                    const double            a_n,
+                    const InverseRefresher &refresh)
   {
     // The last three iterates (oldest first).
     std::array<double, 3> als{}, bes{}, vs{}, as{};
@@ -71,6 +74,12 @@ namespace vesicle_iga
           return {false, it, v, a};
         if (converged(v, a))
           return {true, it, v, a};
+        if (it < 3 && refresh)
+          {
+            std::array<double, 4> T = Tinv;
+            if (refresh(T))
+              Tinv = T;
+          }
         als = {{als[1], als[2], al}};
         bes = {{bes[1], bes[2], be}};
         vs  = {{vs[1], vs[2], v}};

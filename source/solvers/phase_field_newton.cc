@@ -154,14 +154,11 @@ namespace vesicle_iga
         try
           {
             TimerOutput::Scope t(timer, "solve");
-            increment       = 0;
-            last_iterations = solve_linear_system(solver,
-                                                  matrix,
-                                                  increment,
-                                                  rhs,
-                                                  constraints,
-                                                  multigrid.get())
-                                .iterations;
+            increment = 0;
+            last_iterations
+              = solve_linear_system(
+                  solver, matrix, increment, rhs, constraints, multigrid.get())
+                  .iterations;
             result.krylov_iterations += last_iterations;
             if (first_iterations == 0)
               first_iterations = last_iterations;
@@ -174,6 +171,23 @@ namespace vesicle_iga
         phi.add(ga.gamma * dt, increment);
       }
     return result;
+  }
+
+
+  template <int dim>
+  void
+  PhaseFieldNewton<dim>::linear_response(
+    const std::vector<TrilinosWrappers::MPI::Vector> &b,
+    std::vector<TrilinosWrappers::MPI::Vector>       &x)
+  {
+    TimerOutput::Scope t(timer, "solve");
+    x.resize(b.size());
+    for (unsigned int k = 0; k < b.size(); ++k)
+      {
+        x[k].reinit(b[k]);
+        solve_linear_system(
+          solver, matrix, x[k], b[k], constraints, multigrid.get());
+      }
   }
 
 

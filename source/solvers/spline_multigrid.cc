@@ -148,7 +148,7 @@ namespace vesicle_iga
         for (unsigned int i = 0; i < f.n_natural(); ++i)
           n_kept += constrained[i] ? 0 : 1;
         if (n_kept <= (prm.coarse_size > 0 ? prm.coarse_size :
-                       (dim == 2 ? 4000u : 1000u)))
+                                             (dim == 2 ? 4000u : 1000u)))
           break;
         auto c         = std::make_unique<Level>();
         bool coarsened = false;

@@ -16,6 +16,7 @@
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <vesicle_iga/assembly/assembler.h>
 #include <vesicle_iga/assembly/dirichlet_constraints.h>
 #include <vesicle_iga/base/input_error.h>
 #include <vesicle_iga/io/checkpoint.h>
@@ -81,6 +82,10 @@ namespace vesicle_iga
                    TrilinosWrappers::MPI::Vector &v) const;
       void
       write_vtu(const unsigned int step);
+      /// The inverse 2x2 Jacobian of (E21) from the linearised step.
+      std::array<double, 4>
+      linearised_alm_inverse(const double                 dt,
+                             const std::array<double, 4> &fallback);
 
       RunContext                    &context;
       BoxSpaceParameters             box;
@@ -90,7 +95,7 @@ namespace vesicle_iga
       double                         epsilon_over_h;
       std::string                    epsilon_reference;
       VesicleShape<dim>              shape;
-      std::string                    constraint_method;
+      std::string                    constraint_method, alm_jacobian;
       double                         M1, M2, constraint_tolerance;
       unsigned int                   max_alm_iterations;
       double                         rho_inf, end_time, stationarity_tolerance;
@@ -141,6 +146,7 @@ namespace vesicle_iga
       epsilon_over_h         = prm.get_double("Epsilon over h");
       epsilon_reference      = prm.get("Element size for epsilon");
       constraint_method      = prm.get("Constraint method");
+      alm_jacobian           = prm.get("ALM initial Jacobian");
       M1                     = prm.get_double("M1");
       M2                     = prm.get_double("M2");
       constraint_tolerance   = prm.get_double("Constraint tolerance");
@@ -360,7 +366,13 @@ namespace vesicle_iga
             v            = f[1];
             return true;
           };
-          const auto r = alm.step(solve, current.volume, current.area);
+          const auto refresh = [&](std::array<double, 4> &T) {
+            if (alm_jacobian != "linearised")
+              return false;
+            T = linearised_alm_inverse(dt, T);
+            return true;
+          };
+          const auto r = alm.step(solve, current.volume, current.area, refresh);
           alm_its      = r.iterations;
           return r.converged;
         }
@@ -370,6 +382,57 @@ namespace vesicle_iga
           area->set_multiplier(M2 * (current.area - A0));
         }
       return newton_solve();
+    }
+
+
+    template <int dim>
+    std::array<double, 4>
+    WillmoreFlow<dim>::linearised_alm_inverse(
+      const double                 dt,
+      const std::array<double, 4> &fallback)
+    {
+      // T = d(V(phi_{n+1}), A(phi_{n+1})) / d(alpha, beta) of (E21) from
+      // the linearisation of the step just solved: with g_V = (dV/dphi,
+      // N_i), g_A = (dA/dphi, N_i) at that solution (the constraint terms
+      // of (E18) with unit multiplier), dphi_{n+1}/dLambda_X = -gamma dt
+      // K^{-1} g_X, dV/dLambda_X = g_V . dphi_{n+1}/dLambda_X (likewise A),
+      // and (E19) gives dLambda_V/dalpha = -M1, dLambda_A/dbeta = -M2.
+      TimerOutput::Scope    t(*timer, "ALM Jacobian");
+      AreaConstraint<dim>   unit_area(epsilon);
+      VolumeConstraint<dim> unit_volume;
+      unit_area.set_multiplier(1.);
+      unit_volume.set_multiplier(1.);
+      std::vector<TrilinosWrappers::MPI::Vector> g(2), x;
+      TrilinosWrappers::MPI::Vector              ghosted_rate(ghosted);
+      ghosted_rate = 0;
+      ghosted      = phi;
+      for (unsigned int k = 0; k < 2; ++k)
+        {
+          const PhaseFieldTerm<dim> *term
+            = k == 0 ? static_cast<const PhaseFieldTerm<dim> *>(&unit_volume) :
+                       static_cast<const PhaseFieldTerm<dim> *>(&unit_area);
+          PhaseFieldOperator<dim> variation(*dofs, {term});
+          variation.set_state(ghosted, ghosted_rate, 0., 0., false);
+          g[k].reinit(phi_n);
+          assemble_vector<dim>(*dofs,
+                               nullptr,
+                               QGauss<1>(quadrature_points),
+                               {&variation},
+                               increment_constraints,
+                               g[k]);
+          g[k] *= -1.; // assemble_vector gives -R
+        }
+      newton->linear_response(g, x);
+      const double c = -alpha->gamma * dt;
+      // d(V, A)/d(Lambda_V, Lambda_A)
+      const double dV_dLV = c * (g[0] * x[0]), dV_dLA = c * (g[0] * x[1]);
+      const double dA_dLV = c * (g[1] * x[0]), dA_dLA = c * (g[1] * x[1]);
+      const double T00 = -M1 * dV_dLV, T01 = -M2 * dV_dLA;
+      const double T10 = -M1 * dA_dLV, T11 = -M2 * dA_dLA;
+      const double det = T00 * T11 - T01 * T10;
+      if (!std::isfinite(det) || std::abs(det) < 1e-300)
+        return fallback;
+      return {{T11 / det, -T01 / det, -T10 / det, T00 / det}};
     }
 
 
@@ -705,8 +768,7 @@ namespace vesicle_iga
         // GMRES with one V-cycle of the spline multigrid (ILU(0) smoother):
         // robust for the fourth-order Newton matrix at large dt, where
         // ILU and AMG alone need hundreds of iterations (doc/willmore.md).
-        LinearSolverParameters::declare(
-          prm, "gmres-mg", "1e-8", "ilu", "1");
+        LinearSolverParameters::declare(prm, "gmres-mg", "1e-8", "ilu", "1");
         // Spec section 2.5 / 6.2: dt_0 = 1e-10, dt_max = 1.
         StepSizeController::Parameters::declare(prm, "1e-10", "1");
         VesicleShape<2>::declare(prm);
@@ -750,6 +812,20 @@ namespace vesicle_iga
                           Patterns::Selection("alm|penalty|none"),
                           "alm: modified augmented Lagrangian (spec 3.8); "
                           "penalty: fixed targets V0, A0 with M1, M2; none.");
+        prm.declare_entry(
+          "ALM initial Jacobian",
+          "linearised",
+          Patterns::Selection("linearised|previous step"),
+          "The inverse 2x2 Jacobian T^{-1} that the first three ALM "
+          "iterations of a step use (Algorithm 1, lines 5-10; spec 7 item "
+          "7). previous step: the last secant estimate throughout (the "
+          "source's literal reading; I before the first step). "
+          "linearised: the first iteration uses it too, and after an "
+          "unconverged iteration it is replaced by the Jacobian of the "
+          "linearised step (two linear solves with the Newton matrix at "
+          "hand), which keeps the ALM at 1-2 iterations per step when dt "
+          "or the shape change. The secant update (E22) takes over from "
+          "iteration 4 either way.");
         prm.declare_entry("M1", "1", Patterns::Double(0), "Volume penalty M1.");
         prm.declare_entry("M2", "1", Patterns::Double(0), "Area penalty M2.");
         prm.declare_entry("Constraint tolerance",

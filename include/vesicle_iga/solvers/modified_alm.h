@@ -37,8 +37,17 @@ namespace vesicle_iga
     };
 
     /// One time step: @p v_n, @p a_n are V(phi_n), A(phi_n).
+    /// Optionally replaces the inverse Jacobian after an unconverged
+    /// iteration among the first three (which use the current inverse,
+    /// Algorithm 1 lines 5-10) by a better estimate; returns false to keep
+    /// it.
+    using InverseRefresher = std::function<bool(std::array<double, 4> &)>;
+
     Result
-    step(const StepSolver &solve, const double v_n, const double a_n);
+    step(const StepSolver       &solve,
+         const double            v_n,
+         const double            a_n,
+         const InverseRefresher &refresh = InverseRefresher());
 
     double
     alpha() const

@@ -68,6 +68,14 @@ namespace vesicle_iga
           TrilinosWrappers::MPI::Vector       &phi,
           TrilinosWrappers::MPI::Vector       &phidot);
 
+    /// The linearised response of the step just solved to source terms:
+    /// x_k with K x_k = b_k for the last Newton matrix K (N4) and the
+    /// preconditioner in use (no assembly). Used for the 2x2 Jacobian of
+    /// the modified ALM.
+    void
+    linear_response(const std::vector<TrilinosWrappers::MPI::Vector> &b,
+                    std::vector<TrilinosWrappers::MPI::Vector>       &x);
+
     /// Compare K d with central differences of the residual at the state
     /// (phi_n, phidot_n) for dt = 1 and print the relative differences for
     /// h_fd = 1e-2, 1e-3, 1e-4 (they fall as h_fd^2 for a consistent
