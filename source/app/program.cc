@@ -150,6 +150,16 @@ namespace vesicle_iga
                     << " MPI rank(s), output in " << context.output_directory
                     << std::endl;
               s.create(prm, context)->run();
+              if (context.print_details)
+                {
+                  // Peak resident memory (VmHWM) per rank, for benchmarks.
+                  Utilities::System::MemoryStats m;
+                  Utilities::System::get_memory_stats(m);
+                  const auto peak
+                    = Utilities::MPI::min_max_avg(m.VmHWM / 1024., comm);
+                  pcout << "peak memory (VmHWM) per rank: max " << peak.max
+                        << " MB, sum " << peak.sum << " MB" << std::endl;
+                }
             }
         return 0;
       }

@@ -22,7 +22,11 @@
 #include <vesicle_iga/io/checkpoint.h>
 #include <vesicle_iga/io/spline_output.h>
 #include <vesicle_iga/io/time_series.h>
+#include <vesicle_iga/io/vesicle_output.h>
 #include <vesicle_iga/physics/bending_energy.h>
+#include <vesicle_iga/physics/electric_energies.h>
+#include <vesicle_iga/physics/electric_potential.h>
+#include <vesicle_iga/physics/electromechanics_material.h>
 #include <vesicle_iga/physics/phase_field_operator.h>
 #include <vesicle_iga/physics/vesicle_shape.h>
 #include <vesicle_iga/postprocess/level_set_extent.h>
@@ -82,6 +86,12 @@ namespace vesicle_iga
                    TrilinosWrappers::MPI::Vector &v) const;
       void
       write_vtu(const unsigned int step);
+      /// Staggered scheme (spec 3.9): psi from the phase field in @p v.
+      void
+      solve_potential(const TrilinosWrappers::MPI::Vector &v);
+      /// The zero crossings along the field axis through the centre.
+      std::vector<double>
+      field_axis_crossings(const TrilinosWrappers::MPI::Vector &v) const;
       /// The inverse 2x2 Jacobian of (E21) from the linearised step.
       std::array<double, 4>
       linearised_alm_inverse(const double                 dt,
@@ -107,6 +117,11 @@ namespace vesicle_iga
       NewtonParameters               newton_parameters;
       LinearSolverParameters         solver;
       StepSizeController::Parameters time_step;
+      ElectromechanicsMaterial       material;
+      LinearSolverParameters         potential_solver;
+      std::string                    coupling;
+      double                         fixed_point_tolerance;
+      unsigned int                   max_fixed_point_iterations;
 
       // Discrete state, set up in setup().
       std::unique_ptr<TimerOutput>           timer;
@@ -125,10 +140,14 @@ namespace vesicle_iga
       unsigned int                             n_energy_terms = 0;
       std::unique_ptr<PhaseFieldOperator<dim>> op;
       std::unique_ptr<PhaseFieldNewton<dim>>   newton;
-      std::unique_ptr<GeneralizedAlpha>        alpha;
-      double                                   epsilon = 0, h = 0;
-      double                                   V0 = 0, A0 = 0;
-      Monitor                                  current;
+      std::unique_ptr<ElectricPotential<dim>>  potential;
+      std::unique_ptr<PhaseFieldTerm<dim>> flexoelectric, membrane_dielectric,
+        electrolyte_dielectric;
+      unsigned int                      potential_iterations = 0;
+      std::unique_ptr<GeneralizedAlpha> alpha;
+      double                            epsilon = 0, h = 0;
+      double                            V0 = 0, A0 = 0;
+      Monitor                           current;
     };
 
 
@@ -166,6 +185,14 @@ namespace vesicle_iga
       newton_parameters.parse(prm);
       solver.parse(prm);
       time_step.parse(prm);
+      material.parse(prm, dim);
+      prm.enter_subsection("Electric field");
+      potential_solver.parse(prm);
+      coupling              = prm.get("Coupling");
+      fixed_point_tolerance = prm.get_double("Fixed-point tolerance");
+      max_fixed_point_iterations
+        = prm.get_integer("Max fixed-point iterations");
+      prm.leave_subsection();
       prm.leave_subsection();
 
       const int k = continuity < 0 ? int(degree) - 1 : continuity;
@@ -259,18 +286,59 @@ namespace vesicle_iga
                      dofs->locally_relevant_dofs(),
                      context.communicator);
 
-      bending        = std::make_unique<BendingEnergy<dim>>(kappa,
+      bending = std::make_unique<BendingEnergy<dim>>(kappa,
                                                      epsilon,
                                                      spontaneous_curvature);
-      area           = std::make_unique<AreaConstraint<dim>>(epsilon);
-      terms          = {bending.get()};
+      area    = std::make_unique<AreaConstraint<dim>>(epsilon);
+      terms   = {bending.get()};
+      // The electric energies of (E6)-(E8) in the normalised units of spec
+      // 3.10, each switchable.
+      if (material.active())
+        {
+          if (material.flexoelectric)
+            {
+              flexoelectric = std::make_unique<FlexoelectricEnergy<dim>>(
+                material.flexoelectric_coefficient(),
+                material.membrane_thickness(),
+                epsilon);
+              terms.push_back(flexoelectric.get());
+            }
+          if (material.membrane_dielectric)
+            {
+              membrane_dielectric
+                = std::make_unique<MembraneDielectricEnergy<dim>>(
+                  material.membrane_thickness(),
+                  material.permittivity(material.e_m),
+                  epsilon);
+              terms.push_back(membrane_dielectric.get());
+            }
+          if (material.electrolyte_dielectric)
+            {
+              electrolyte_dielectric
+                = std::make_unique<ElectrolyteDielectricEnergy<dim>>(
+                  material.permittivity(material.e_in),
+                  material.permittivity(material.e_out));
+              terms.push_back(electrolyte_dielectric.get());
+            }
+        }
       n_energy_terms = terms.size();
       if (constraint_method != "none")
         {
           terms.push_back(area.get());
           terms.push_back(&volume);
         }
-      op    = std::make_unique<PhaseFieldOperator<dim>>(*dofs, terms);
+      op = std::make_unique<PhaseFieldOperator<dim>>(*dofs, terms);
+      if (material.active())
+        {
+          potential
+            = std::make_unique<ElectricPotential<dim>>(*dofs,
+                                                       material,
+                                                       QGauss<1>(
+                                                         quadrature_points),
+                                                       potential_solver,
+                                                       *timer);
+          op->set_potential(&potential->potential());
+        }
       alpha = std::make_unique<GeneralizedAlpha>(rho_inf);
       newton
         = std::make_unique<PhaseFieldNewton<dim>>(*dofs,
@@ -441,12 +509,50 @@ namespace vesicle_iga
     WillmoreFlow<dim>::write_vtu(const unsigned int step)
     {
       TimerOutput::Scope t(*timer, "output");
-      ghosted = phi_n;
-      SplineFieldWriter<dim> writer(*dofs, nullptr);
-      writer.add_components({"phi"});
-      writer.write(ghosted,
-                   context.output_directory,
-                   "phi-" + Utilities::int_to_string(step, 5));
+      ghosted                = phi_n;
+      const std::string name = Utilities::int_to_string(step, 5);
+      write_vesicle_vtu(*dofs,
+                        ghosted,
+                        potential ? &potential->potential() : nullptr,
+                        material,
+                        context.output_directory,
+                        (potential ? "fields-" : "phi-") + name);
+      // Profiles of phi, sigma (and psi, |grad psi|) along the axes.
+      const auto          phi_natural = natural_coefficients(phi_n);
+      std::vector<double> psi_natural;
+      if (potential)
+        psi_natural = natural_coefficients(potential->owned_potential());
+      if (Utilities::MPI::this_mpi_process(context.communicator) == 0)
+        write_axis_profiles(*space,
+                            phi_natural,
+                            potential ? &psi_natural : nullptr,
+                            material,
+                            shape.center,
+                            context.output_directory + "/profiles-" + name
+                              + ".csv");
+    }
+
+
+    template <int dim>
+    void
+    WillmoreFlow<dim>::solve_potential(const TrilinosWrappers::MPI::Vector &v)
+    {
+      if (!potential)
+        return;
+      ghosted = v;
+      potential_iterations += potential->solve(ghosted).iterations;
+    }
+
+
+    template <int dim>
+    std::vector<double>
+    WillmoreFlow<dim>::field_axis_crossings(
+      const TrilinosWrappers::MPI::Vector &v) const
+    {
+      return zero_crossings_along_axis(*space,
+                                       natural_coefficients(v),
+                                       shape.center,
+                                       material.direction());
     }
 
 
@@ -501,7 +607,8 @@ namespace vesicle_iga
         {
           from_natural(shape.phase_field(*space, epsilon), phi_n);
           phi_constraints.distribute(phi_n);
-          phi_nm1        = phi_n;
+          phi_nm1 = phi_n;
+          solve_potential(phi_n);
           current        = monitor(phi_n);
           V0             = current.volume;
           A0             = current.area;
@@ -544,6 +651,7 @@ namespace vesicle_iga
           max_lagrangian_increase = s.at("max_lagrangian_increase");
           volume.set_multiplier(s.at("Lambda_V"));
           area->set_multiplier(s.at("Lambda_A"));
+          solve_potential(phi_n);
           current = monitor(phi_n);
         }
       context.pcout << (restart_file.empty() ? "initial" : "restart")
@@ -588,6 +696,19 @@ namespace vesicle_iga
         columns.emplace_back(c);
       for (unsigned int d = 0; d < dim; ++d)
         columns.push_back(std::string("extent_") + "xyz"[d]);
+      if (potential)
+        {
+          // Energies in eV (spec 3.10), the potential solver's
+          // iterations, and the midpoint of the zero crossings along the
+          // field axis through the centre (0 for a shape that is mirror
+          // symmetric about the mid-plane normal to the field).
+          for (unsigned int k = 0; k < n_energy_terms; ++k)
+            columns.push_back(terms[k]->name() + "_eV");
+          for (const char *c : {"total_energy_eV",
+                                "potential_iterations",
+                                "field_axis_midpoint"})
+            columns.emplace_back(c);
+        }
       TimeSeriesWriter series(context.output_directory + "/time-series.csv",
                               columns,
                               comm,
@@ -632,8 +753,24 @@ namespace vesicle_iga
           unsigned int newton_its = 0, krylov_its = 0, alm_its = 0;
           const double alpha_save = alm.alpha(), beta_save = alm.beta();
           const auto   Tinv_save = alm.inverse_jacobian();
-          const bool   ok
-            = constrained_step(dt, alm, newton_its, krylov_its, alm_its);
+          bool ok = constrained_step(dt, alm, newton_its, krylov_its, alm_its);
+          // Fixed-point coupling (spec 3.9 option): psi from phi_{n+1}, and
+          // the step again from phi_n, until psi settles.
+          unsigned int fixed_point_its = 0;
+          while (ok && potential && coupling == "fixed-point")
+            {
+              const TrilinosWrappers::MPI::Vector psi_old(
+                potential->owned_potential());
+              solve_potential(phi);
+              TrilinosWrappers::MPI::Vector change(psi_old);
+              change -= potential->owned_potential();
+              if (change.l2_norm() <= fixed_point_tolerance
+                                        * potential->owned_potential().l2_norm()
+                  || ++fixed_point_its >= max_fixed_point_iterations)
+                break;
+              alm.set_state(alpha_save, beta_save, Tinv_save);
+              ok = constrained_step(dt, alm, newton_its, krylov_its, alm_its);
+            }
           double error = -1;
           if (ok && step > 0)
             error = local_error_norm(
@@ -642,6 +779,8 @@ namespace vesicle_iga
             {
               ++rejected;
               alm.set_state(alpha_save, beta_save, Tinv_save);
+              if (potential && coupling == "fixed-point")
+                solve_potential(phi_n);
               if (!ok && !controller.reject_failure())
                 {
                   write_checkpoint();
@@ -664,7 +803,12 @@ namespace vesicle_iga
           t += dt;
           dt_prev = dt;
           ++step;
-          const double energy_prev  = current.energy;
+          const double energy_prev = current.energy;
+          // psi^{n+1} from the accepted phase field: the potential of the
+          // next step (staggered), and the one the energies are reported
+          // with (the fixed-point loop has it already).
+          if (coupling != "fixed-point")
+            solve_potential(phi_n);
           current                   = monitor(phi_n);
           const double area_error   = current.area / A0 - 1;
           const double volume_error = current.volume / V0 - 1;
@@ -698,6 +842,16 @@ namespace vesicle_iga
             row.push_back(v);
           for (const double e : current.extents)
             row.push_back(e);
+          if (potential)
+            {
+              for (unsigned int k = 0; k < n_energy_terms; ++k)
+                row.push_back(material.to_eV(current.functionals[k]));
+              row.push_back(material.to_eV(current.energy));
+              row.push_back(potential_iterations);
+              const auto x = field_axis_crossings(phi_n);
+              row.push_back(x.size() >= 2 ? 0.5 * (x.front() + x.back()) : 0.);
+              potential_iterations = 0;
+            }
           series.add_row(row);
 
           context.pcout << "step " << step << " t=" << t << " dt=" << dt
@@ -878,6 +1032,28 @@ namespace vesicle_iga
                           "the Newton system of the first step for each dt "
                           "with a known solution and print iterations, "
                           "times and errors (tools/bench); empty: off.");
+        ElectromechanicsMaterial::declare(prm);
+        prm.enter_subsection("Electric field");
+        // CG with the spline multigrid (SSOR): the Galerkin coarse
+        // operators keep the seven orders of magnitude of sigma(phi).
+        LinearSolverParameters::declare(prm, "cg-mg", "1e-10", "ssor", "2");
+        prm.declare_entry("Coupling",
+                          "staggered",
+                          Patterns::Selection("staggered|fixed-point"),
+                          "staggered: psi once per step from phi_n (spec "
+                          "3.9, the reference); fixed-point: then psi again "
+                          "from phi_{n+1} and the step repeated until psi "
+                          "changes by less than the tolerance.");
+        prm.declare_entry("Fixed-point tolerance",
+                          "1e-6",
+                          Patterns::Double(0),
+                          "Relative change of psi (l2) that ends the "
+                          "fixed-point iteration.");
+        prm.declare_entry("Max fixed-point iterations",
+                          "10",
+                          Patterns::Integer(1),
+                          "Fixed-point iterations per step at most.");
+        prm.leave_subsection();
         prm.declare_entry("Check Jacobian",
                           "false",
                           Patterns::Bool(),
