@@ -113,6 +113,36 @@ namespace vesicle_iga
       }
   }
 
+
+  template <int dim>
+  void
+  write_plane_section(const SplineSpace<dim>    &space,
+                      const std::vector<double> &phi,
+                      const Point<dim>          &center,
+                      const unsigned int         first_axis,
+                      const unsigned int         second_axis,
+                      const std::string         &filename)
+  {
+    std::ofstream out(filename);
+    out << "xyz"[first_axis] << ',' << "xyz"[second_axis] << ",phi\n"
+        << std::setprecision(8);
+    const auto         &za = space.knot_vector(first_axis).breakpoints();
+    const auto         &zb = space.knot_vector(second_axis).breakpoints();
+    const unsigned int  na = 4 * space.knot_vector(first_axis).n_elements();
+    const unsigned int  nb = 4 * space.knot_vector(second_axis).n_elements();
+    std::vector<double> value;
+    for (unsigned int j = 0; j <= nb; ++j)
+      for (unsigned int i = 0; i <= na; ++i)
+        {
+          Point<dim> x   = center;
+          x[first_axis]  = za.front() + (za.back() - za.front()) * i / na;
+          x[second_axis] = zb.front() + (zb.back() - zb.front()) * j / nb;
+          space.evaluate(phi, 1, x, value);
+          out << x[first_axis] << ',' << x[second_axis] << ',' << value[0]
+              << '\n';
+        }
+  }
+
   template void
   write_vesicle_vtu(const SplineDofHandler<2> &,
                     const TrilinosWrappers::MPI::Vector &,
@@ -140,5 +170,19 @@ namespace vesicle_iga
                       const std::vector<double> *,
                       const ElectromechanicsMaterial &,
                       const Point<3> &,
+                      const std::string &);
+  template void
+  write_plane_section(const SplineSpace<2> &,
+                      const std::vector<double> &,
+                      const Point<2> &,
+                      unsigned int,
+                      unsigned int,
+                      const std::string &);
+  template void
+  write_plane_section(const SplineSpace<3> &,
+                      const std::vector<double> &,
+                      const Point<3> &,
+                      unsigned int,
+                      unsigned int,
                       const std::string &);
 } // namespace vesicle_iga

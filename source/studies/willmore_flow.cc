@@ -530,6 +530,18 @@ namespace vesicle_iga
                             shape.center,
                             context.output_directory + "/profiles-" + name
                               + ".csv");
+      // The plane of the field axis and the first other axis (x-y for the
+      // default field along y; x-y in 2D).
+      const unsigned int field_axis   = material.direction();
+      const unsigned int lateral_axis = field_axis == 0 ? 1 : 0;
+      if (Utilities::MPI::this_mpi_process(context.communicator) == 0)
+        write_plane_section(*space,
+                            phi_natural,
+                            shape.center,
+                            std::min(lateral_axis, field_axis),
+                            std::max(lateral_axis, field_axis),
+                            context.output_directory + "/section-" + name
+                              + ".csv");
     }
 
 
@@ -575,7 +587,17 @@ namespace vesicle_iga
       StepSizeController controller(time_step);
       ModifiedALM        alm(1., 1., constraint_tolerance, max_alm_iterations);
       double             t = 0, dt_prev = 0, monitored_prev = 0;
-      unsigned int       step = 0, rejected = 0;
+      // Energies are compared on the scale of the shape-dependent part: the
+      // bending energy plus what the flow has released so far. The
+      // electrolyte term (E8) carries a large shape-independent part
+      // (-1/2 int e |grad psi|^2 over the whole box) that would make a
+      // change relative to the total meaningless.
+      double     lagrangian_initial = 0;
+      const auto energy_scale       = [&](const auto &state) {
+        return std::abs(state.functionals[0])
+               + std::abs(lagrangian_initial - state.lagrangian);
+      };
+      unsigned int step = 0, rejected = 0;
       // For the closing summary: worst constraint error and largest
       // increases of E and of the Lagrangian between accepted steps.
       double max_constraint_error = 0, max_energy_increase = 0,
@@ -602,17 +624,19 @@ namespace vesicle_iga
                                                      "max_energy_increase",
                                                      "max_lagrangian_increase",
                                                      "Lambda_V",
-                                                     "Lambda_A"};
+                                                     "Lambda_A",
+                                                     "lagrangian_initial"};
       if (restart_file.empty())
         {
           from_natural(shape.phase_field(*space, epsilon), phi_n);
           phi_constraints.distribute(phi_n);
           phi_nm1 = phi_n;
           solve_potential(phi_n);
-          current        = monitor(phi_n);
-          V0             = current.volume;
-          A0             = current.area;
-          monitored_prev = current.lagrangian;
+          current            = monitor(phi_n);
+          V0                 = current.volume;
+          A0                 = current.area;
+          monitored_prev     = current.lagrangian;
+          lagrangian_initial = current.lagrangian;
           alm = ModifiedALM(V0, A0, constraint_tolerance, max_alm_iterations);
         }
       else
@@ -629,11 +653,12 @@ namespace vesicle_iga
           from_natural(c.vectors.at("phi_n"), phi_n);
           from_natural(c.vectors.at("phidot_n"), phidot_n);
           from_natural(c.vectors.at("phi_nm1"), phi_nm1);
-          const auto &s  = c.scalars;
-          t              = s.at("t");
-          dt_prev        = s.at("dt_prev");
-          step           = s.at("step");
-          monitored_prev = s.at("energy_prev");
+          const auto &s      = c.scalars;
+          t                  = s.at("t");
+          dt_prev            = s.at("dt_prev");
+          step               = s.at("step");
+          monitored_prev     = s.at("energy_prev");
+          lagrangian_initial = s.at("lagrangian_initial");
           controller.set_state(s.at("dt"),
                                s.at("c_prev"),
                                s.at("steps_since_cut"));
@@ -727,6 +752,7 @@ namespace vesicle_iga
                                  {"dt_prev", dt_prev},
                                  {"step", step},
                                  {"energy_prev", monitored_prev},
+                                 {"lagrangian_initial", lagrangian_initial},
                                  {"dt", controller.dt()},
                                  {"c_prev", controller.previous_filter_value()},
                                  {"steps_since_cut", controller.steps_since_failure()},
@@ -803,13 +829,31 @@ namespace vesicle_iga
           t += dt;
           dt_prev = dt;
           ++step;
-          const double energy_prev = current.energy;
+          const double energy_prev     = current.energy;
+          const double lagrangian_prev = current.lagrangian;
+          // The step minimises E(phi, psi^n) with psi^n frozen (spec 3.9),
+          // so that is the energy that must not rise over it: measured
+          // before psi is updated. With psi^{n+1} the reported total may
+          // move either way (e.g. E_DE (E8) changes with sigma(phi) though
+          // its phi-derivative vanishes for e_in = e_out).
+          double energy_frozen = 0, lagrangian_frozen = 0;
+          if (potential && coupling != "fixed-point")
+            {
+              const auto frozen = monitor(phi_n);
+              energy_frozen     = frozen.energy;
+              lagrangian_frozen = frozen.lagrangian;
+            }
           // psi^{n+1} from the accepted phase field: the potential of the
           // next step (staggered), and the one the energies are reported
           // with (the fixed-point loop has it already).
           if (coupling != "fixed-point")
             solve_potential(phi_n);
-          current                   = monitor(phi_n);
+          current = monitor(phi_n);
+          if (!(potential && coupling != "fixed-point"))
+            {
+              energy_frozen     = current.energy;
+              lagrangian_frozen = current.lagrangian;
+            }
           const double area_error   = current.area / A0 - 1;
           const double volume_error = current.volume / V0 - 1;
           if (constraint_method != "none")
@@ -818,11 +862,11 @@ namespace vesicle_iga
                                              std::abs(volume_error)});
           max_energy_increase
             = std::max(max_energy_increase,
-                       (current.energy - energy_prev) / std::abs(energy_prev));
+                       (energy_frozen - energy_prev) / energy_scale(current));
           max_lagrangian_increase
             = std::max(max_lagrangian_increase,
-                       (current.lagrangian - monitored_prev)
-                         / std::abs(monitored_prev));
+                       (lagrangian_frozen - lagrangian_prev)
+                         / energy_scale(current));
 
           std::vector<double> row = {double(step),
                                      t,
@@ -868,7 +912,7 @@ namespace vesicle_iga
           if (checkpoint_interval > 0 && step % checkpoint_interval == 0)
             write_checkpoint();
           const double change = std::abs(current.lagrangian - monitored_prev)
-                                / std::abs(current.lagrangian);
+                                / energy_scale(current);
           monitored_prev       = current.lagrangian;
           const bool saturated = !time_step.adaptive
                                  || controller.dt() >= time_step.max_dt * 0.999;
@@ -892,18 +936,21 @@ namespace vesicle_iga
                       << "xyz"[d] << "=" << current.extents[d];
       context.pcout << std::endl;
       if (step > 0)
-        context.pcout
-          << "largest |A/A0-1|, |V/V0-1| over the accepted steps: "
-          << max_constraint_error
-          << (constraint_method == "alm" ?
-                (max_constraint_error <= constraint_tolerance ?
-                   " (within the ALM tolerance)" :
-                   " (ABOVE the ALM tolerance)") :
-                "")
-          << std::endl
-          << "largest relative increase between accepted steps: energy "
-          << std::max(0., max_energy_increase) << ", Lagrangian "
-          << std::max(0., max_lagrangian_increase) << std::endl;
+        context.pcout << "largest |A/A0-1|, |V/V0-1| over the accepted steps: "
+                      << max_constraint_error
+                      << (constraint_method == "alm" ?
+                            (max_constraint_error <= constraint_tolerance ?
+                               " (within the ALM tolerance)" :
+                               " (ABOVE the ALM tolerance)") :
+                            "")
+                      << std::endl
+                      << "largest relative increase over an accepted step"
+                      << (potential && coupling != "fixed-point" ?
+                            " (psi frozen, as the step minimises)" :
+                            "")
+                      << ": energy " << std::max(0., max_energy_increase)
+                      << ", Lagrangian "
+                      << std::max(0., max_lagrangian_increase) << std::endl;
     }
   } // namespace
 
@@ -913,9 +960,10 @@ namespace vesicle_iga
   {
     return {
       "willmore-flow",
-      "Spec Part E without electric terms: constrained Willmore/Helfrich "
-      "flow of a vesicle, generalized-alpha, Newton, modified ALM or "
-      "penalty, adaptive steps.",
+      "Spec Part E: constrained Willmore/Helfrich flow of a vesicle, "
+      "generalized-alpha, Newton, modified ALM or penalty, adaptive steps; "
+      "with subsection 'Electric field' the flexoelectric and dielectric "
+      "energies and the electric potential (staggered or fixed-point).",
       [](ParameterHandler &prm) {
         prm.enter_subsection(section);
         BoxSpaceParameters::declare(prm, "-2", "2", "32");
@@ -1005,10 +1053,14 @@ namespace vesicle_iga
         prm.declare_entry("Stationarity tolerance",
                           "1e-6",
                           Patterns::Double(0),
-                          "Stop when the relative change of the Lagrangian "
-                          "E + Lambda_A (A - A0) + Lambda_V (V - V0) over one "
-                          "step falls below this, once dt has reached Max "
-                          "dt.");
+                          "Stop when the change of the Lagrangian "
+                          "L = E + Lambda_A (A - A0) + Lambda_V (V - V0) over "
+                          "one step, relative to the bending energy plus the "
+                          "energy released since the start (|E_B| + |L(0) - "
+                          "L|), falls below this, once dt has reached Max dt. "
+                          "(The electrolyte dielectric energy has a large "
+                          "shape-independent part, so a change relative to L "
+                          "itself would stop too early.)");
         prm.declare_entry("VTU interval",
                           "0",
                           Patterns::Integer(0),

@@ -40,4 +40,21 @@ namespace vesicle_iga
                       const ElectromechanicsMaterial &material,
                       const Point<dim>               &center,
                       const std::string              &filename);
+
+  /**
+   * phi on a uniform grid (4 points per element and direction) in the
+   * coordinate plane spanned by @p first_axis and @p second_axis through
+   * @p center: the whole domain in 2D, a mid-plane section in 3D. CSV with
+   * the columns named after the two axes and phi; the zero-level contours
+   * in the plane containing the field axis (spec 3.11) are drawn from it by
+   * tools/plot-contours.py. Written by rank 0.
+   */
+  template <int dim>
+  void
+  write_plane_section(const SplineSpace<dim>    &space,
+                      const std::vector<double> &phi_natural,
+                      const Point<dim>          &center,
+                      const unsigned int         first_axis,
+                      const unsigned int         second_axis,
+                      const std::string         &filename);
 } // namespace vesicle_iga
