@@ -38,26 +38,29 @@ std::vector<double> dipoles;
 
 struct Case
 {
-  double              lower, upper, h, eps, sigma_m;
-  bool                vesicle;
+  double lower, upper, h, eps, sigma_m;
+  bool   vesicle;
 };
 
 void
 run(const Case &c, const bool report_field)
 {
-  const unsigned int          n = std::lround((c.upper - c.lower) / c.h);
-  std::array<KnotVector, 2>   kv{{KnotVector::uniform(3, n, c.lower, c.upper),
+  const unsigned int        n = std::lround((c.upper - c.lower) / c.h);
+  std::array<KnotVector, 2> kv{{KnotVector::uniform(3, n, c.lower, c.upper),
                                 KnotVector::uniform(3, n, c.lower, c.upper)}};
-  const SplineSpace<2>        space(kv);
-  const PatchMesh<2>          mesh(MPI_COMM_WORLD, space, nullptr);
-  const SplineDofHandler<2>   dofs(mesh, space, 1);
-  ElectromechanicsMaterial    material;
+  const SplineSpace<2>      space(kv);
+  const PatchMesh<2>        mesh(MPI_COMM_WORLD, space, nullptr);
+  const SplineDofHandler<2> dofs(mesh, space, 1);
+  ElectromechanicsMaterial  material;
   material.field_strength = 5e4; // 50 kV/m -> E0 = 0.05
   material.sigma_m        = c.sigma_m;
   LinearSolverParameters solver;
   solver.method    = "cg-mg";
   solver.tolerance = 1e-10;
-  TimerOutput timer(MPI_COMM_WORLD, out, TimerOutput::never, TimerOutput::wall_times);
+  TimerOutput          timer(MPI_COMM_WORLD,
+                    out,
+                    TimerOutput::never,
+                    TimerOutput::wall_times);
   ElectricPotential<2> potential(dofs, material, QGauss<1>(6), solver, timer);
 
   std::vector<double> phi_natural(space.n_basis(), 1.);
@@ -67,7 +70,8 @@ run(const Case &c, const bool report_field)
       circle.semi_axes = {{1., 1.}};
       phi_natural      = circle.phase_field(space, c.eps);
     }
-  TrilinosWrappers::MPI::Vector owned(dofs.locally_owned_dofs(), MPI_COMM_WORLD);
+  TrilinosWrappers::MPI::Vector owned(dofs.locally_owned_dofs(),
+                                      MPI_COMM_WORLD);
   for (unsigned int i = 0; i < space.n_basis(); ++i)
     if (owned.in_local_range(dofs.dof_index(i)))
       owned[dofs.dof_index(i)] = phi_natural[i];
@@ -135,15 +139,14 @@ main(int argc, char *argv[])
     run({-8, 8, eps / 2, eps, 3e-7, true}, true);
   const double ratio_1 = (dipoles[0] - 1) / (dipoles[1] - 1),
                ratio_2 = (dipoles[1] - 1) / (dipoles[2] - 1);
-  const double R0 = 2 * std::sqrt(dipoles[2]) - std::sqrt(dipoles[1]);
+  const double R0      = 2 * std::sqrt(dipoles[2]) - std::sqrt(dipoles[1]);
   out << "D - 1 ratios per halving of eps: " << std::fixed
       << std::setprecision(2) << ratio_1 << ", " << ratio_2
       << (ratio_1 >= 2 && ratio_2 >= 2 ? " (>= 2: ok)" : " (BELOW 2)")
       << std::endl
-      << "extrapolated insulating radius 2 R_eff(eps) - R_eff(2 eps) = "
-      << R0 << ": within 10 % of R = 1: "
-      << (std::abs(R0 - 1) < 0.1 ? "yes" : "NO") << std::defaultfloat
-      << std::endl;
+      << "extrapolated insulating radius 2 R_eff(eps) - R_eff(2 eps) = " << R0
+      << ": within 10 % of R = 1: " << (std::abs(R0 - 1) < 0.1 ? "yes" : "NO")
+      << std::defaultfloat << std::endl;
   for (const double sigma_m : {3e-7, 3e-5, 3e-3})
     for (const double h : {0.2, 0.1, 0.05})
       run({-5, 5, h, 2 * h, sigma_m, true}, false);
