@@ -23,6 +23,7 @@
 #include <vesicle_iga/io/spline_output.h>
 #include <vesicle_iga/io/time_series.h>
 #include <vesicle_iga/io/vesicle_output.h>
+#include <vesicle_iga/parallel/natural_numbering.h>
 #include <vesicle_iga/physics/bending_energy.h>
 #include <vesicle_iga/physics/electric_energies.h>
 #include <vesicle_iga/physics/electric_potential.h>
@@ -356,14 +357,7 @@ namespace vesicle_iga
     WillmoreFlow<dim>::natural_coefficients(
       const TrilinosWrappers::MPI::Vector &v) const
     {
-      TrilinosWrappers::MPI::Vector all(dofs->locally_owned_dofs(),
-                                        complete_index_set(dofs->n_dofs()),
-                                        context.communicator);
-      all = v;
-      std::vector<double> c(space->n_basis());
-      for (unsigned int i = 0; i < c.size(); ++i)
-        c[i] = all[dofs->dof_index(i)];
-      return c;
+      return gather_natural(*dofs, v);
     }
 
 
@@ -372,10 +366,7 @@ namespace vesicle_iga
     WillmoreFlow<dim>::from_natural(const std::vector<double>     &c,
                                     TrilinosWrappers::MPI::Vector &v) const
     {
-      for (unsigned int i = 0; i < c.size(); ++i)
-        if (v.in_local_range(dofs->dof_index(i)))
-          v[dofs->dof_index(i)] = c[i];
-      v.compress(VectorOperation::insert);
+      scatter_natural(*dofs, c, v);
     }
 
 

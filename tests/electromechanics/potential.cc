@@ -23,6 +23,7 @@
 
 #include <deal.II/base/quadrature_lib.h>
 
+#include <vesicle_iga/parallel/natural_numbering.h>
 #include <vesicle_iga/parallel/patch_mesh.h>
 #include <vesicle_iga/physics/electric_potential.h>
 #include <vesicle_iga/physics/vesicle_shape.h>
@@ -72,10 +73,7 @@ run(const Case &c, const bool report_field)
     }
   TrilinosWrappers::MPI::Vector owned(dofs.locally_owned_dofs(),
                                       MPI_COMM_WORLD);
-  for (unsigned int i = 0; i < space.n_basis(); ++i)
-    if (owned.in_local_range(dofs.dof_index(i)))
-      owned[dofs.dof_index(i)] = phi_natural[i];
-  owned.compress(VectorOperation::insert);
+  scatter_natural(dofs, phi_natural, owned);
   TrilinosWrappers::MPI::Vector phi(dofs.locally_owned_dofs(),
                                     dofs.locally_relevant_dofs(),
                                     MPI_COMM_WORLD);

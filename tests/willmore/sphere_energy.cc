@@ -13,6 +13,7 @@
 //      error at eps / R = 0.8. This is why eps must shrink with h.
 #include <deal.II/base/quadrature_lib.h>
 
+#include <vesicle_iga/parallel/natural_numbering.h>
 #include <vesicle_iga/parallel/patch_mesh.h>
 #include <vesicle_iga/parallel/spline_dof_handler.h>
 #include <vesicle_iga/physics/bending_energy.h>
@@ -43,10 +44,7 @@ relative_error(const unsigned int n, const double epsilon)
                                     MPI_COMM_WORLD);
   TrilinosWrappers::MPI::Vector owned(dofs.locally_owned_dofs(),
                                       MPI_COMM_WORLD);
-  for (unsigned int i = 0; i < c.size(); ++i)
-    if (owned.in_local_range(dofs.dof_index(i)))
-      owned[dofs.dof_index(i)] = c[i];
-  owned.compress(VectorOperation::insert);
+  scatter_natural(dofs, c, owned);
   phi = owned;
   const BendingEnergy<3> bending(1., epsilon, 0.);
   PhaseFieldOperator<3>  op(dofs, {&bending});

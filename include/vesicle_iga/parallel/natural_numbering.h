@@ -1,0 +1,37 @@
+#pragma once
+
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <vesicle_iga/parallel/spline_dof_handler.h>
+
+#include <vector>
+
+namespace vesicle_iga
+{
+  /**
+   * Spline coefficients in the natural (tensor-product) numbering of
+   * SplineSpace, as initial shapes, checkpoints and point evaluation use
+   * them, and the distributed vectors in the SplineDofHandler numbering
+   * that the solvers use. One place converts between the two.
+   */
+
+  /**
+   * Writes the locally owned entries of @p owned (a vector without ghosts
+   * in the numbering of @p dofs, single component) from the complete
+   * natural coefficient vector @p natural, and compresses.
+   */
+  template <int dim>
+  void
+  scatter_natural(const SplineDofHandler<dim>   &dofs,
+                  const std::vector<double>     &natural,
+                  TrilinosWrappers::MPI::Vector &owned);
+
+  /**
+   * The complete natural coefficient vector of @p v on every rank (a
+   * collective call).
+   */
+  template <int dim>
+  std::vector<double>
+  gather_natural(const SplineDofHandler<dim>         &dofs,
+                 const TrilinosWrappers::MPI::Vector &v);
+} // namespace vesicle_iga

@@ -1,0 +1,50 @@
+#include <deal.II/base/index_set.h>
+
+#include <vesicle_iga/parallel/natural_numbering.h>
+
+namespace vesicle_iga
+{
+  template <int dim>
+  void
+  scatter_natural(const SplineDofHandler<dim>   &dofs,
+                  const std::vector<double>     &natural,
+                  TrilinosWrappers::MPI::Vector &owned)
+  {
+    for (unsigned int i = 0; i < natural.size(); ++i)
+      if (owned.in_local_range(dofs.dof_index(i)))
+        owned[dofs.dof_index(i)] = natural[i];
+    owned.compress(VectorOperation::insert);
+  }
+
+
+  template <int dim>
+  std::vector<double>
+  gather_natural(const SplineDofHandler<dim>         &dofs,
+                 const TrilinosWrappers::MPI::Vector &v)
+  {
+    TrilinosWrappers::MPI::Vector all(dofs.locally_owned_dofs(),
+                                      complete_index_set(dofs.n_dofs()),
+                                      dofs.get_mesh().get_communicator());
+    all = v;
+    std::vector<double> c(dofs.get_space().n_basis());
+    for (unsigned int i = 0; i < c.size(); ++i)
+      c[i] = all[dofs.dof_index(i)];
+    return c;
+  }
+
+
+  template void
+  scatter_natural(const SplineDofHandler<2> &,
+                  const std::vector<double> &,
+                  TrilinosWrappers::MPI::Vector &);
+  template void
+  scatter_natural(const SplineDofHandler<3> &,
+                  const std::vector<double> &,
+                  TrilinosWrappers::MPI::Vector &);
+  template std::vector<double>
+  gather_natural(const SplineDofHandler<2> &,
+                 const TrilinosWrappers::MPI::Vector &);
+  template std::vector<double>
+  gather_natural(const SplineDofHandler<3> &,
+                 const TrilinosWrappers::MPI::Vector &);
+} // namespace vesicle_iga
