@@ -10,9 +10,11 @@ namespace vesicle_iga
                   const std::vector<double>     &natural,
                   TrilinosWrappers::MPI::Vector &owned)
   {
+    // n_components values per basis function, component fastest.
+    const unsigned int nc = dofs.n_components();
     for (unsigned int i = 0; i < natural.size(); ++i)
-      if (owned.in_local_range(dofs.dof_index(i)))
-        owned[dofs.dof_index(i)] = natural[i];
+      if (owned.in_local_range(dofs.dof_index(i / nc, i % nc)))
+        owned[dofs.dof_index(i / nc, i % nc)] = natural[i];
     owned.compress(VectorOperation::insert);
   }
 

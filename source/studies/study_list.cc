@@ -12,6 +12,8 @@ namespace vesicle_iga
   plate_with_hole_description();
   StudyDescription
   willmore_flow_description();
+  StudyDescription
+  navier_stokes_description();
 
   const std::vector<StudyDescription> &
   available_studies()
@@ -20,7 +22,8 @@ namespace vesicle_iga
       = {poisson_mms_description(),
          biharmonic_mms_description(),
          plate_with_hole_description(),
-         willmore_flow_description()};
+         willmore_flow_description(),
+         navier_stokes_description()};
     return studies;
   }
 } // namespace vesicle_iga

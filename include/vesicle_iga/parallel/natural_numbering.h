@@ -17,8 +17,8 @@ namespace vesicle_iga
 
   /**
    * Writes the locally owned entries of @p owned (a vector without ghosts
-   * in the numbering of @p dofs, single component) from the complete
-   * natural coefficient vector @p natural, and compresses.
+   * in the numbering of @p dofs) from the complete natural coefficient vector
+   * @p natural (n_components values per function, component fastest), and compresses.
    */
   template <int dim>
   void
