@@ -46,7 +46,7 @@ for value in "$@"; do
     echo "run-sweep: value '$value' has ${#values[@]} parts for ${#entries[@]} parameters" >&2
     exit 1
   fi
-  name=$(echo "$value" | tr ';/ ' '_--')
+  name=$(echo "$value" | sed 's/;/_/g; s#[/ ]#-#g')
   dir="$out/case-$name"
   mkdir -p "$dir"
   {

@@ -27,10 +27,18 @@ namespace vesicle_iga
     TrilinosWrappers::MPI::Vector all(dofs.locally_owned_dofs(),
                                       complete_index_set(dofs.n_dofs()),
                                       dofs.get_mesh().get_communicator());
-    all = v;
-    std::vector<double> c(dofs.get_space().n_basis());
+    // From the owned entries only: @p v may be a ghosted vector, whose
+    // overlapping map does not import into another map reliably.
+    TrilinosWrappers::MPI::Vector owned(dofs.locally_owned_dofs(),
+                                        dofs.get_mesh().get_communicator());
+    for (const auto i : dofs.locally_owned_dofs())
+      owned[i] = v[i];
+    owned.compress(VectorOperation::insert);
+    all = owned;
+    const unsigned int  nc = dofs.n_components();
+    std::vector<double> c(dofs.get_space().n_basis() * nc);
     for (unsigned int i = 0; i < c.size(); ++i)
-      c[i] = all[dofs.dof_index(i)];
+      c[i] = all[dofs.dof_index(i / nc, i % nc)];
     return c;
   }
 

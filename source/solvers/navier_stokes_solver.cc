@@ -9,6 +9,7 @@
 #include <vesicle_iga/solvers/navier_stokes_solver.h>
 
 #include <cmath>
+#include <stdexcept>
 
 namespace vesicle_iga
 {
@@ -266,14 +267,21 @@ namespace vesicle_iga
         residual *= -1.;
         increment = 0;
         LinearSolveResult solve;
-        {
-          TimerOutput::Scope scope(timer, "flow linear solve");
-          solve = solve_linear_system(linear_solver,
-                                      system_matrix,
-                                      increment,
-                                      residual,
-                                      increment_constraints);
-        }
+        try
+          {
+            TimerOutput::Scope scope(timer, "flow linear solve");
+            solve = solve_linear_system(linear_solver,
+                                        system_matrix,
+                                        increment,
+                                        residual,
+                                        increment_constraints);
+          }
+        catch (const std::runtime_error &)
+          {
+            // A Krylov failure fails the step: the caller may retry with a
+            // smaller dt (the state is unchanged).
+            return result;
+          }
         result.krylov_iterations += solve.iterations;
         ++result.newton_iterations;
         rate_n1 += increment;

@@ -15,7 +15,9 @@
 #include <vesicle_iga/base/input_error.h>
 #include <vesicle_iga/io/spline_output.h>
 #include <vesicle_iga/io/time_series.h>
+#include <vesicle_iga/parallel/natural_numbering.h>
 #include <vesicle_iga/postprocess/convergence_study_table.h>
+#include <vesicle_iga/postprocess/line_sample.h>
 #include <vesicle_iga/solvers/navier_stokes_solver.h>
 #include <vesicle_iga/spline/box_space_parameters.h>
 #include <vesicle_iga/studies/convergence_parameters.h>
@@ -28,8 +30,9 @@ namespace vesicle_iga
 {
   namespace
   {
-    const char        *section      = "Navier-Stokes";
-    const unsigned int n_boundaries = 8;
+    const char        *section        = "Navier-Stokes";
+    const unsigned int n_boundaries   = 8;
+    const unsigned int n_line_samples = 2;
 
     /// A vector-valued formula of the .prm ("expr_1; expr_2[; expr_3]" in
     /// x, y, z and t, constants pi and Re) with @p extra trailing zero
@@ -106,6 +109,7 @@ namespace vesicle_iga
         std::string type, where, velocity;
       };
       std::vector<BoundaryEntry> boundaries;
+      std::vector<LineSample>    line_samples;
       double                     weak_penalty;
       bool                       weak_inflow;
       std::string                pressure_level;
@@ -139,6 +143,23 @@ namespace vesicle_iga
           prm.enter_subsection("Boundary " + std::to_string(b));
           boundaries.push_back(
             {prm.get("Type"), prm.get("Where"), prm.get("Velocity")});
+          prm.leave_subsection();
+        }
+      std::vector<std::string> field_names{"u", "v"};
+      if (dim == 3)
+        field_names.push_back("w");
+      field_names.push_back("p");
+      for (unsigned int l = 1; l <= n_line_samples; ++l)
+        {
+          const std::string name = "Line sample " + std::to_string(l);
+          prm.enter_subsection(name);
+          LineSample sample;
+          sample.parse(prm,
+                       std::string(section) + "/" + name + "/",
+                       field_names,
+                       dim);
+          if (!sample.name.empty())
+            line_samples.push_back(sample);
           prm.leave_subsection();
         }
       prm.enter_subsection("Time stepping");
@@ -335,18 +356,32 @@ namespace vesicle_iga
       bool         steady = false;
       while (solver.time() < end_time * (1 - 1e-12) && step < max_steps)
         {
-          const double step_dt = std::min(dt, end_time - solver.time());
+          double step_dt = std::min(dt, end_time - solver.time());
           TrilinosWrappers::MPI::Vector previous(solver.owned_solution());
-          const FlowStepResult          result = solver.advance(step_dt);
+          FlowStepResult                result = solver.advance(step_dt);
+          // A step whose Newton iteration fails is repeated with dt / 4
+          // (the state is unchanged), as the phase-field controller does.
+          unsigned int rejected = 0;
+          while (!result.converged && rejected < 10)
+            {
+              ++rejected;
+              dt      = step_dt / 4;
+              step_dt = dt;
+              context.pcout << "  Newton did not converge (residual "
+                            << result.residual
+                            << "): retry with dt = " << step_dt << std::endl;
+              result = solver.advance(step_dt);
+            }
           check_input(result.converged,
-                      prefix + "Newton/Max iterations",
-                      std::to_string(newton.max_iterations),
-                      "enough Newton iterations: the step from t = "
+                      prefix + "Time stepping/Time step",
+                      std::to_string(dt0),
+                      "a step the Newton iteration can take: the step from "
+                      "t = "
                         + std::to_string(solver.time())
-                        + " with dt = " + std::to_string(step_dt)
-                        + " did not converge (residual "
-                        + std::to_string(result.residual)
-                        + "); reduce 'Time step' or raise the limit");
+                        + " did not converge even with dt = "
+                        + std::to_string(step_dt)
+                        + "; the run stops here (the time series so far is "
+                          "kept)");
           ++step;
           previous.add(-1., solver.owned_solution());
           const double change
@@ -387,6 +422,30 @@ namespace vesicle_iga
                       << ", t = " << solver.time() << std::endl;
       if (convergence.write_vtu && (vtu_interval == 0 || step % vtu_interval))
         write_vtu(step);
+
+      if (!line_samples.empty())
+        {
+          const std::vector<double> natural
+            = gather_natural(solver.dofs(), solver.solution());
+          for (const auto &sample : line_samples)
+            {
+              LineSample named = sample;
+              if (!single_run)
+                named.name += "-" + tag;
+              const double deviation = write_line_sample(
+                named,
+                space,
+                natural,
+                dim + 1,
+                context.output_directory,
+                Utilities::MPI::this_mpi_process(context.communicator) == 0);
+              if (!sample.reference.empty())
+                context.pcout << named.name << ".csv: largest deviation of "
+                              << sample.field_name << " from "
+                              << sample.reference << ": " << deviation
+                              << std::endl;
+            }
+        }
 
       if (exact_velocity_text.empty())
         return {};
@@ -578,6 +637,12 @@ namespace vesicle_iga
                               Patterns::Anything(),
                               "u_b, dim formulas separated by ';' in x, y[, "
                               "z], t (e.g. '8*y-2*y^2; 0').");
+            prm.leave_subsection();
+          }
+        for (unsigned int l = 1; l <= n_line_samples; ++l)
+          {
+            prm.enter_subsection("Line sample " + std::to_string(l));
+            LineSample::declare(prm, "u|v|w|p");
             prm.leave_subsection();
           }
         prm.enter_subsection("Time stepping");

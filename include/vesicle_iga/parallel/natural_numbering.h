@@ -18,7 +18,8 @@ namespace vesicle_iga
   /**
    * Writes the locally owned entries of @p owned (a vector without ghosts
    * in the numbering of @p dofs) from the complete natural coefficient vector
-   * @p natural (n_components values per function, component fastest), and compresses.
+   * @p natural (n_components values per function, component fastest), and
+   * compresses.
    */
   template <int dim>
   void
@@ -27,8 +28,8 @@ namespace vesicle_iga
                   TrilinosWrappers::MPI::Vector &owned);
 
   /**
-   * The complete natural coefficient vector of @p v on every rank (a
-   * collective call).
+   * The complete natural coefficient vector of @p v on every rank (n_components
+   * values per function, component fastest; a collective call).
    */
   template <int dim>
   std::vector<double>
