@@ -33,6 +33,12 @@ namespace vesicle_iga
                       "u",
                       Patterns::Selection(field_names),
                       "The field written as the second column.");
+    prm.declare_entry("Print integral",
+                      "false",
+                      Patterns::Bool(),
+                      "Print the integral of the field along the line "
+                      "(trapezoidal rule on the samples), e.g. the flux "
+                      "through an outlet.");
     prm.declare_entry("Reference",
                       "",
                       Patterns::Anything(),
@@ -83,7 +89,8 @@ namespace vesicle_iga
                 prefix + "Field",
                 field_name,
                 "a field of the " + std::to_string(dim) + "D solution");
-    reference = prm.get("Reference");
+    print_integral = prm.get_bool("Print integral");
+    reference      = prm.get("Reference");
     if (reference.rfind("function:", 0) == 0)
       {
         // Checked by evaluating once.
@@ -248,7 +255,7 @@ namespace vesicle_iga
 
 
   template <int dim>
-  double
+  std::pair<double, double>
   write_line_sample(const LineSample          &sample,
                     const SplineSpace<dim>    &space,
                     const std::vector<double> &natural,
@@ -280,8 +287,16 @@ namespace vesicle_iga
             f << x[sample.coordinate] << ',' << value_at(x) << '\n';
           }
       }
+    double integral = 0, length = 0;
+    for (unsigned int d = 0; d < dim; ++d)
+      length += std::pow(sample.end[d] - sample.start[d], 2);
+    length = std::sqrt(length);
+    for (unsigned int i = 0; i < sample.points; ++i)
+      integral += (i == 0 || i + 1 == sample.points ? 0.5 : 1.)
+                  * value_at(point_on_line(double(i) / (sample.points - 1)));
+    integral *= length / (sample.points - 1);
     if (sample.reference.empty())
-      return std::numeric_limits<double>::quiet_NaN();
+      return {std::numeric_limits<double>::quiet_NaN(), integral};
     double deviation = 0;
     if (sample.reference.rfind("function:", 0) == 0)
       {
@@ -296,7 +311,7 @@ namespace vesicle_iga
             deviation
               = std::max(deviation, std::abs(value_at(x) - f.value(x3)));
           }
-        return deviation;
+        return {deviation, integral};
       }
     // At each reference abscissa: the point of the line with that
     // coordinate.
@@ -306,18 +321,18 @@ namespace vesicle_iga
       deviation
         = std::max(deviation,
                    std::abs(value_at(point_on_line((c - a) / (b - a))) - v));
-    return deviation;
+    return {deviation, integral};
   }
 
 
-  template double
+  template std::pair<double, double>
   write_line_sample(const LineSample &,
                     const SplineSpace<2> &,
                     const std::vector<double> &,
                     const unsigned int,
                     const std::string &,
                     const bool);
-  template double
+  template std::pair<double, double>
   write_line_sample(const LineSample &,
                     const SplineSpace<3> &,
                     const std::vector<double> &,

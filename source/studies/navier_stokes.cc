@@ -432,13 +432,17 @@ namespace vesicle_iga
               LineSample named = sample;
               if (!single_run)
                 named.name += "-" + tag;
-              const double deviation = write_line_sample(
+              const auto [deviation, integral] = write_line_sample(
                 named,
                 space,
                 natural,
                 dim + 1,
                 context.output_directory,
                 Utilities::MPI::this_mpi_process(context.communicator) == 0);
+              if (sample.print_integral)
+                context.pcout << named.name << ".csv: integral of "
+                              << sample.field_name
+                              << " along the line: " << integral << std::endl;
               if (!sample.reference.empty())
                 context.pcout << named.name << ".csv: largest deviation of "
                               << sample.field_name << " from "

@@ -25,7 +25,8 @@ namespace vesicle_iga
     unsigned int coordinate = 1; // the abscissa written: 0 x, 1 y, 2 z
     unsigned int component  = 0; // of the solution
     std::string  coordinate_name, field_name;
-    std::string  reference; // "" or the name of built-in data
+    std::string  reference;              // "" or the name of built-in data
+    bool         print_integral = false; // print the integral along the line
 
     static void
     declare(ParameterHandler &prm, const std::string &field_names);
@@ -60,10 +61,11 @@ namespace vesicle_iga
    * Samples @p sample of the field with natural coefficients @p natural
    * (n_components per function) on @p space, writes directory/name.csv on
    * rank 0 and returns the largest deviation from the reference data (NaN
-   * without reference).
+   * without reference) and the integral of the field along the line
+   * (trapezoidal rule on the samples).
    */
   template <int dim>
-  double
+  std::pair<double, double>
   write_line_sample(const LineSample          &sample,
                     const SplineSpace<dim>    &space,
                     const std::vector<double> &natural,
