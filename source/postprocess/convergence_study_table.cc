@@ -77,4 +77,14 @@ namespace vesicle_iga
   }
 
 
+  void
+  ConvergenceStudyTable::report(const ConditionalOStream &out,
+                                const MPI_Comm            comm,
+                                const std::string        &directory) const
+  {
+    if (out.is_active())
+      print(out.get_stream());
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
+      write_csv(directory + "/convergence.csv");
+  }
 } // namespace vesicle_iga

@@ -545,10 +545,9 @@ namespace vesicle_iga
           }
       if (exact_velocity_text.empty())
         return;
-      if (context.pcout.is_active())
-        table.print(context.pcout.get_stream());
-      if (Utilities::MPI::this_mpi_process(context.communicator) == 0)
-        table.write_csv(context.output_directory + "/convergence.csv");
+      table.report(context.pcout,
+                   context.communicator,
+                   context.output_directory);
     }
   } // namespace
 

@@ -309,10 +309,9 @@ namespace vesicle_iga
            "*_relative: divided by the same norm of the exact "
            "field."
         << std::endl;
-      if (context.pcout.is_active())
-        table.print(context.pcout.get_stream());
-      if (Utilities::MPI::this_mpi_process(context.communicator) == 0)
-        table.write_csv(context.output_directory + "/convergence.csv");
+      table.report(context.pcout,
+                   context.communicator,
+                   context.output_directory);
     }
   } // namespace
 

@@ -1,6 +1,8 @@
 #pragma once
 
+#include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/convergence_table.h>
+#include <deal.II/base/mpi.h>
 
 #include <map>
 #include <ostream>
@@ -35,6 +37,12 @@ namespace vesicle_iga
     print(std::ostream &out) const;
     void
     write_csv(const std::string &filename) const;
+    /// What every convergence study ends with: the table on @p out if it is
+    /// active, directory/convergence.csv written by rank 0 of @p comm.
+    void
+    report(const ConditionalOStream &out,
+           const MPI_Comm            comm,
+           const std::string        &directory) const;
 
 
   private:
