@@ -317,6 +317,15 @@ namespace vesicle_iga
     // coordinate.
     const auto a = sample.start[sample.coordinate],
                b = sample.end[sample.coordinate];
+    // The reference points also go to name-reference.csv (for
+    // tools/plot-line-samples.py).
+    if (root)
+      {
+        std::ofstream f(directory + "/" + sample.name + "-reference.csv");
+        f << sample.coordinate_name << ',' << sample.field_name << '\n';
+        for (const auto &[c, v] : reference_line_data(sample.reference))
+          f << c << ',' << v << '\n';
+      }
     for (const auto &[c, v] : reference_line_data(sample.reference))
       deviation
         = std::max(deviation,
