@@ -34,7 +34,7 @@ namespace vesicle_iga
     for (const auto i : dofs.locally_owned_dofs())
       owned[i] = v[i];
     owned.compress(VectorOperation::insert);
-    all = owned;
+    all                    = owned;
     const unsigned int  nc = dofs.n_components();
     std::vector<double> c(dofs.get_space().n_basis() * nc);
     for (unsigned int i = 0; i < c.size(); ++i)
