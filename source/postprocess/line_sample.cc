@@ -4,6 +4,7 @@
 #include <vesicle_iga/base/input_error.h>
 #include <vesicle_iga/postprocess/line_sample.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <iomanip>
@@ -110,7 +111,16 @@ namespace vesicle_iga
           }
       }
     else if (!reference.empty())
-      reference_line_data(reference); // throws on an unknown name
+      {
+        const auto names
+          = Utilities::split_string_list(reference_line_data_names(), '|');
+        check_input(std::find(names.begin(), names.end(), reference)
+                      != names.end(),
+                    prefix + "Reference",
+                    reference,
+                    "empty, 'function: <formula in x, y, z>' or one of "
+                      + reference_line_data_names());
+      }
   }
 
 

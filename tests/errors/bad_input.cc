@@ -46,7 +46,21 @@ main(int argc, char *argv[])
         "set Epsilon over h = 0.5\nend\n"},
        {"sphere with unequal semi-axes",
         "set Study = willmore-flow\nsubsection Willmore flow\n"
-        "set Semi-axes = 1, 0.5\nend\n"}};
+        "set Semi-axes = 1, 0.5\nend\n"},
+       {"flow velocity with the wrong number of components",
+        "set Study = navier-stokes\nsubsection Navier-Stokes\n"
+        "subsection Boundary 1\nset Type = strong\nset Where = all\n"
+        "set Velocity = 1\nend\nend\n"},
+       {"flow formula with an unknown symbol",
+        "set Study = navier-stokes\nsubsection Navier-Stokes\n"
+        "set Body force = 0; gravity\nend\n"},
+       {"negative Reynolds number",
+        "set Study = navier-stokes\nsubsection Navier-Stokes\n"
+        "set Reynolds number = -5\nend\n"},
+       {"line sample reference unknown",
+        "set Study = navier-stokes\nsubsection Navier-Stokes\n"
+        "subsection Line sample 1\nset Name = c\nset Start = 0.5, 0\n"
+        "set End = 0.5, 1\nset Reference = ghia-1983\nend\nend\n"}};
   for (const auto &[name, text] : cases)
     {
       std::ofstream("case.prm") << "set Output directory = results\n" << text;
