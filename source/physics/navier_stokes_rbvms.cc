@@ -91,15 +91,6 @@ namespace vesicle_iga
 
 
   template <int dim>
-  NavierStokesRBVMS<dim>::NavierStokesRBVMS(
-    const SplineDofHandler<dim> &dofs,
-    const FlowCoefficients<dim> &coefficients)
-    : dofs(dofs)
-    , coefficients(coefficients)
-  {}
-
-
-  template <int dim>
   void
   NavierStokesRBVMS<dim>::assemble_cell(const SplineCellValues<dim> &v,
                                         FullMatrix<double>          &A,
@@ -256,8 +247,7 @@ namespace vesicle_iga
     const Function<dim>          &boundary_velocity,
     const double                  penalty_constant,
     const bool                    inflow_term)
-    : dofs(dofs)
-    , coefficients(coefficients)
+    : FlowTerm<dim>(dofs, coefficients)
     , selection(selection)
     , boundary_velocity(boundary_velocity)
     , penalty_constant(penalty_constant)
@@ -364,8 +354,41 @@ namespace vesicle_iga
 
   template struct FlowCoefficients<2>;
   template struct FlowCoefficients<3>;
+  template <int dim>
+  void
+  RBVMSLumpedSchurOperators<dim>::assemble_cell(const SplineCellValues<dim> &v,
+                                                FullMatrix<double> & /*matrix*/,
+                                                Vector<double> &b) const
+  {
+    const unsigned int               n = v.n_basis_per_element();
+    std::vector<std::vector<double>> cu;
+    get_element_coefficients(dofs, *state.velocity, v.element(), cu);
+    const double Re = coefficients.reynolds_number;
+    for (unsigned int q = 0; q < v.n_quadrature_points(); ++q)
+      {
+        Tensor<1, dim> u;
+        for (unsigned int a = 0; a < dim; ++a)
+          u[a] = v.value(cu[a], q);
+        const double nu = coefficients.viscosity_at(v.quadrature_point(q)) / Re;
+        const Tensor<2, dim> &G     = v.metric_tensor(q);
+        const double          tau_m = tau_momentum(
+          G, u, state.dt, nu, coefficients.inverse_estimate_constant);
+        const double tau_c = 1. / (trace(G) * tau_m);
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            const double NJxW = v.shape_value(i, q) * v.JxW(q);
+            for (unsigned int a = 0; a < dim; ++a)
+              b(a * n + i) += state.rate_factor * NJxW;
+            b(dim * n + i) += state.pressure_factor * NJxW / (nu + tau_c);
+          }
+      }
+  }
+
+
   template class NavierStokesRBVMS<2>;
   template class NavierStokesRBVMS<3>;
+  template class RBVMSLumpedSchurOperators<2>;
+  template class RBVMSLumpedSchurOperators<3>;
   template class WeakVelocityDirichlet<2>;
   template class WeakVelocityDirichlet<3>;
 } // namespace vesicle_iga

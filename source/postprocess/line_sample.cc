@@ -57,6 +57,9 @@ namespace vesicle_iga
                     const unsigned int              dim)
   {
     name = prm.get("Name");
+    // An unnamed slot is unused: its (2D) defaults must not stop a 3D run.
+    if (name.empty())
+      return;
     for (const auto &[entry, point] :
          {std::make_pair("Start", &start), std::make_pair("End", &end)})
       {

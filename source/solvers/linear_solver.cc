@@ -11,6 +11,36 @@
 
 namespace vesicle_iga
 {
+  namespace
+  {
+    /// The Krylov entries every "Linear solver" subsection has.
+    void
+    declare_krylov_entries(ParameterHandler  &prm,
+                           const std::string &default_tolerance,
+                           const std::string &iteration_limit_meaning)
+    {
+      prm.declare_entry("Tolerance",
+                        default_tolerance,
+                        Patterns::Double(0, 1),
+                        "Relative residual reduction of the Krylov method.");
+      prm.declare_entry("Max iterations",
+                        "5000",
+                        Patterns::Integer(1),
+                        "Iteration limit of the Krylov method; reaching it "
+                          + iteration_limit_meaning + ".");
+    }
+
+
+    void
+    parse_krylov_entries(ParameterHandler &prm, LinearSolverParameters &p)
+    {
+      p.method         = prm.get("Method");
+      p.tolerance      = prm.get_double("Tolerance");
+      p.max_iterations = prm.get_integer("Max iterations");
+    }
+  } // namespace
+
+
   void
   LinearSolverParameters::declare(ParameterHandler  &prm,
                                   const std::string &default_method,
@@ -29,17 +59,8 @@ namespace vesicle_iga
                       "ILU(1) on each rank (block Jacobi across ranks); "
                       "direct: Amesos KLU sparse LU; gmres-mg, cg-mg: GMRES "
                       "or CG with one V-cycle of the geometric spline "
-                      "multigrid (subsection Multigrid; phase-field studies "
-                      "only).");
-    prm.declare_entry("Tolerance",
-                      default_tolerance,
-                      Patterns::Double(0, 1),
-                      "Relative residual reduction of the Krylov method.");
-    prm.declare_entry("Max iterations",
-                      "5000",
-                      Patterns::Integer(1),
-                      "Iteration limit of the Krylov method; reaching it is "
-                      "an error.");
+                      "multigrid (subsection Multigrid).");
+    declare_krylov_entries(prm, default_tolerance, "is an error");
     SplineMultigridParameters::declare(prm, default_smoother, default_sweeps);
     prm.leave_subsection();
   }
@@ -49,10 +70,118 @@ namespace vesicle_iga
   LinearSolverParameters::parse(ParameterHandler &prm)
   {
     prm.enter_subsection("Linear solver");
-    method         = prm.get("Method");
-    tolerance      = prm.get_double("Tolerance");
-    max_iterations = prm.get_integer("Max iterations");
+    parse_krylov_entries(prm, *this);
     multigrid.parse(prm);
+    prm.leave_subsection();
+  }
+
+
+  void
+  FlowBlockPreconditionerParameters::declare(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Block preconditioner");
+    prm.declare_entry(
+      "Velocity preconditioner",
+      "spline-multigrid",
+      Patterns::Selection("spline-multigrid|amg"),
+      "One V-cycle on the velocity block: spline-multigrid (the geometric "
+      "multigrid of the nested spline spaces, every velocity component "
+      "coarsened alike, smoother 'Velocity smoother', sparse LU on the "
+      "coarsest level; "
+      "mesh-independent counts) or amg (Trilinos ML; the count grows "
+      "under refinement on spline spaces, doc/flow.md).");
+    prm.declare_entry("Velocity sweeps",
+                      "3",
+                      Patterns::Integer(1),
+                      "Smoother sweeps (ssor, ilu) or Chebyshev degree of "
+                      "the V-cycle on the velocity block (Method = "
+                      "fgmres-block).");
+    prm.declare_entry("Velocity smoother",
+                      "chebyshev",
+                      Patterns::Selection("ssor|chebyshev|ilu"),
+                      "Smoother of the velocity spline multigrid: ssor "
+                      "(symmetric Gauss-Seidel per rank), chebyshev "
+                      "(polynomial of degree 'Velocity sweeps' in the "
+                      "Jacobi-scaled matrix) or ilu (ILU(0) per rank).");
+    prm.declare_entry("Velocity coarse size",
+                      "0",
+                      Patterns::Integer(0),
+                      "The velocity spline multigrid coarsens until a level "
+                      "has at most this many unknowns, solved by sparse LU "
+                      "(0: 4000 in 2D, 1000 in 3D).");
+    prm.declare_entry("Schur sweeps",
+                      "2",
+                      Patterns::Integer(1),
+                      "Smoother sweeps of the AMG V-cycle on the SIMPLE "
+                      "Schur complement C - D diag(A)^-1 B.");
+    prm.declare_entry("Velocity elliptic",
+                      "true",
+                      Patterns::Bool(),
+                      "true: symmetric smoothed aggregation with Chebyshev "
+                      "smoothing for the velocity block (mass and viscous "
+                      "terms dominate); false: non-symmetric smoothed "
+                      "aggregation (convection-dominated steps).");
+    prm.declare_entry(
+      "Schur approximation",
+      "cahouet-chabard",
+      Patterns::Selection("cahouet-chabard|simple"),
+      "cahouet-chabard: S^-1 = (lumped viscous pressure mass)^-1 + "
+      "(C - D M_L^-1 B)^-1 with M_L the lumped velocity mass; iteration "
+      "counts independent of the mesh from Stokes to transient flows. "
+      "simple: S = C - D diag(A)^-1 B (grows with refinement in viscous "
+      "flows; kept for comparison).");
+    prm.leave_subsection();
+  }
+
+
+  void
+  FlowBlockPreconditionerParameters::parse(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Block preconditioner");
+    velocity_preconditioner = prm.get("Velocity preconditioner");
+    velocity_sweeps         = prm.get_integer("Velocity sweeps");
+    velocity_coarse_size    = prm.get_integer("Velocity coarse size");
+    velocity_smoother       = prm.get("Velocity smoother");
+    schur_sweeps            = prm.get_integer("Schur sweeps");
+    velocity_elliptic       = prm.get_bool("Velocity elliptic");
+    schur_approximation     = prm.get("Schur approximation");
+    prm.leave_subsection();
+  }
+
+
+  void
+  LinearSolverParameters::declare_flow(ParameterHandler  &prm,
+                                       const std::string &default_method,
+                                       const std::string &default_tolerance)
+  {
+    prm.enter_subsection("Linear solver");
+    prm.declare_entry("Method",
+                      default_method,
+                      Patterns::Selection(
+                        "gmres-ilu|gmres-amg|direct|fgmres-block"),
+                      "gmres-ilu: restarted GMRES with ILU(1) on each rank "
+                      "(block Jacobi across ranks); gmres-amg: GMRES with "
+                      "Trilinos ML AMG on the whole system; direct: Amesos "
+                      "KLU sparse LU (gathers the matrix); fgmres-block: "
+                      "flexible GMRES with the block upper-triangular "
+                      "preconditioner (AMG on the velocity block and on the "
+                      "SIMPLE Schur complement C - D diag(A)^-1 B, "
+                      "doc/flow.md).");
+    declare_krylov_entries(prm,
+                           default_tolerance,
+                           "fails the time step (which is then retried with "
+                           "a smaller step)");
+    FlowBlockPreconditionerParameters::declare(prm);
+    prm.leave_subsection();
+  }
+
+
+  void
+  LinearSolverParameters::parse_flow(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Linear solver");
+    parse_krylov_entries(prm, *this);
+    block.parse(prm);
     prm.leave_subsection();
   }
 
@@ -63,7 +192,7 @@ namespace vesicle_iga
                       TrilinosWrappers::MPI::Vector        &x,
                       const TrilinosWrappers::MPI::Vector  &b,
                       const AffineConstraints<double>      &constraints,
-                      MatrixPreconditioner                 *multigrid)
+                      MatrixPreconditioner *caller_preconditioner)
   {
     LinearSolveResult result{0, 0.};
     const double      b_norm = b.l2_norm();
@@ -78,13 +207,14 @@ namespace vesicle_iga
         SolverControl control(parameters.max_iterations,
                               parameters.tolerance * b_norm);
         std::unique_ptr<TrilinosWrappers::PreconditionBase> preconditioner;
-        if (parameters.uses_multigrid())
+        if (parameters.uses_caller_preconditioner())
           {
-            check_input(multigrid != nullptr,
+            check_input(caller_preconditioner != nullptr,
                         "Linear solver/Method",
                         parameters.method,
-                        "a method without multigrid for this study (the "
-                        "spline multigrid serves the phase-field solvers)");
+                        "a method this study offers (gmres-mg and cg-mg "
+                        "serve the phase-field solvers, fgmres-block the "
+                        "flow solver)");
           }
         else if (parameters.method == "gmres-ilu")
           {
@@ -106,7 +236,8 @@ namespace vesicle_iga
           }
         try
           {
-            // The multigrid V-cycle as a deal.II preconditioner.
+            // The caller's preconditioner (multigrid V-cycle, flow blocks) as a
+            // deal.II preconditioner.
             struct Wrapper
             {
               const MatrixPreconditioner *p;
@@ -116,13 +247,19 @@ namespace vesicle_iga
               {
                 p->vmult(dst, src);
               }
-            } mg{multigrid};
+            } caller{caller_preconditioner};
             using Vector   = TrilinosWrappers::MPI::Vector;
             const auto run = [&](const auto &P) {
               if (parameters.method == "cg-amg" || parameters.method == "cg-mg")
                 {
                   SolverCG<Vector> cg(control);
                   cg.solve(A, x, b, P);
+                }
+              else if (parameters.method == "fgmres-block")
+                {
+                  SolverFGMRES<Vector> fgmres(
+                    control, SolverFGMRES<Vector>::AdditionalData(100));
+                  fgmres.solve(A, x, b, P);
                 }
               else
                 {
@@ -133,8 +270,8 @@ namespace vesicle_iga
                   gmres.solve(A, x, b, P);
                 }
             };
-            if (parameters.uses_multigrid())
-              run(mg);
+            if (parameters.uses_caller_preconditioner())
+              run(caller);
             else
               run(*preconditioner);
           }

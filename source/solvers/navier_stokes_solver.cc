@@ -5,6 +5,7 @@
 
 #include <vesicle_iga/assembly/assembler.h>
 #include <vesicle_iga/assembly/dirichlet_constraints.h>
+#include <vesicle_iga/base/input_error.h>
 #include <vesicle_iga/parallel/natural_numbering.h>
 #include <vesicle_iga/solvers/navier_stokes_solver.h>
 
@@ -42,6 +43,7 @@ namespace vesicle_iga
     , pressure_at_end(pressure_at_end)
     , timer(timer)
     , rbvms(dof_handler, coefficients)
+    , lumped_schur(dof_handler, coefficients)
   {
     // (H21): C_B = 5 (p + 1) unless given.
     const double C_B = weak_penalty_constant > 0 ?
@@ -60,6 +62,9 @@ namespace vesicle_iga
     // level when no boundary does; output and errors use the zero-mean
     // pressure.
     pinned_pressure = dof_handler.dof_index(0, dim);
+    if (linear_solver.method == "fgmres-block")
+      block_preconditioner
+        = std::make_unique<FlowBlockPreconditioner>(dim, linear_solver.block);
 
     TimerOutput::Scope                scope(timer, "flow setup");
     TrilinosWrappers::SparsityPattern sparsity;
@@ -168,6 +173,7 @@ namespace vesicle_iga
     state.dt          = dt;
     state.with_matrix = with_matrix;
     rbvms.set_state(state);
+    lumped_schur.set_state(state);
     for (auto &w : weak_terms)
       w->set_state(state);
   }
@@ -269,12 +275,71 @@ namespace vesicle_iga
         LinearSolveResult solve;
         try
           {
+            if (block_preconditioner)
+              {
+                TimerOutput::Scope scope(timer, "flow preconditioner setup");
+                if (linear_solver.block.velocity_preconditioner
+                      == "spline-multigrid"
+                    && !velocity_multigrid_set)
+                  {
+                    // Velocity block row of (basis i, component c):
+                    // new_index(i) dim + c; constrained where the
+                    // monolithic row is (the strong conditions keep their
+                    // unknowns from step to step).
+                    IndexSet velocity_owned(space.n_basis() * dim);
+                    for (const auto g : dof_handler.locally_owned_dofs())
+                      if (g % (dim + 1) < dim)
+                        velocity_owned.add_index(g / (dim + 1) * dim
+                                                 + g % (dim + 1));
+                    velocity_owned.compress();
+                    SplineMultigridParameters mg;
+                    mg.smoother    = linear_solver.block.velocity_smoother;
+                    mg.sweeps      = linear_solver.block.velocity_sweeps;
+                    mg.coarse_size = linear_solver.block.velocity_coarse_size;
+                    block_preconditioner->set_velocity_preconditioner(
+                      std::make_unique<SplineMultigrid<dim>>(
+                        dof_handler,
+                        dim,
+                        [this](const unsigned int i, const unsigned int c) {
+                          return dof_handler.dof_index(i, 0) / (dim + 1) * dim
+                                 + c;
+                        },
+                        velocity_owned,
+                        [this](const types::global_dof_index g) {
+                          return increment_constraints.is_constrained(
+                            g / dim * (dim + 1) + g % dim);
+                        },
+                        mg));
+                    velocity_multigrid_set = true;
+                  }
+                if (linear_solver.block.schur_approximation
+                    == "cahouet-chabard")
+                  {
+                    // At the state of this iteration (set by the assembly).
+                    TrilinosWrappers::MPI::Vector lumped(
+                      dof_handler.locally_owned_dofs(), comm);
+                    const AffineConstraints<double> none;
+                    assemble_vector<dim>(dof_handler,
+                                         nullptr,
+                                         quadrature,
+                                         {&lumped_schur},
+                                         none,
+                                         lumped);
+                    block_preconditioner->set_lumped_operators(lumped);
+                  }
+                block_preconditioner->initialize(system_matrix);
+              }
             TimerOutput::Scope scope(timer, "flow linear solve");
             solve = solve_linear_system(linear_solver,
                                         system_matrix,
                                         increment,
                                         residual,
-                                        increment_constraints);
+                                        increment_constraints,
+                                        block_preconditioner.get());
+          }
+        catch (const InputError &)
+          {
+            throw;
           }
         catch (const std::runtime_error &)
           {

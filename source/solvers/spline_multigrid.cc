@@ -61,6 +61,8 @@ namespace vesicle_iga
   {
     std::array<KnotVector, dim>   knot_vectors;
     std::array<unsigned int, dim> n_basis;
+    /// Unknowns per basis function; natural index = basis * nc + component.
+    unsigned int nc = 1;
     /// Level unknown of each natural basis index (invalid: not kept).
     std::vector<types::global_dof_index> index;
     types::global_dof_index              n_unknowns = 0;
@@ -74,9 +76,11 @@ namespace vesicle_iga
     std::unique_ptr<TrilinosWrappers::SolverDirect>     direct;
     mutable TrilinosWrappers::MPI::Vector               x, b, r, t;
 
+    /// The tensor-product index of the basis function of natural index i.
     std::array<unsigned int, dim>
     multi_index(unsigned int i) const
     {
+      i /= nc;
       std::array<unsigned int, dim> m;
       for (unsigned int d = 0; d < dim; ++d)
         {
@@ -88,7 +92,7 @@ namespace vesicle_iga
     unsigned int
     n_natural() const
     {
-      unsigned int n = 1;
+      unsigned int n = nc;
       for (unsigned int d = 0; d < dim; ++d)
         n *= n_basis[d];
       return n;
@@ -106,32 +110,70 @@ namespace vesicle_iga
   {
     AssertThrow(dofs.n_components() == 1,
                 ExcMessage("SplineMultigrid: scalar fields only."));
-    const SplineSpace<dim> &space = dofs.get_space();
+    setup(
+      dofs.get_space(),
+      1,
+      [&](const unsigned int i, const unsigned int) {
+        return dofs.dof_index(i);
+      },
+      dofs.locally_owned_dofs(),
+      [&](const types::global_dof_index g) {
+        if (!constraints.is_constrained(g))
+          return false;
+        AssertThrow(!constraints.is_inhomogeneously_constrained(g)
+                      && constraints.get_constraint_entries(g)->empty(),
+                    ExcMessage("SplineMultigrid: only homogeneous "
+                               "Dirichlet constraints (x_i = 0)."));
+        return true;
+      });
+  }
 
-    // The fine level: the dof handler's numbering; constrained functions
+
+  template <int dim>
+  SplineMultigrid<dim>::SplineMultigrid(
+    const SplineDofHandler<dim> &dofs,
+    const unsigned int           n_components,
+    const std::function<types::global_dof_index(unsigned int, unsigned int)>
+                                                       &unknown,
+    const IndexSet                                     &owned,
+    const std::function<bool(types::global_dof_index)> &constrained,
+    const SplineMultigridParameters                    &parameters)
+    : prm(parameters)
+    , communicator(dofs.get_mesh().get_communicator())
+  {
+    setup(dofs.get_space(), n_components, unknown, owned, constrained);
+  }
+
+
+  template <int dim>
+  void
+  SplineMultigrid<dim>::setup(
+    const SplineSpace<dim> &space,
+    const unsigned int      nc,
+    const std::function<types::global_dof_index(unsigned int, unsigned int)>
+                                                       &unknown,
+    const IndexSet                                     &owned,
+    const std::function<bool(types::global_dof_index)> &is_constrained)
+  {
+    // The fine level: the caller's numbering; constrained unknowns
     // (gathered from all ranks, natural numbering) are not level unknowns.
     auto fine          = std::make_unique<Level>();
     fine->knot_vectors = space.knot_vectors();
+    fine->nc           = nc;
     for (unsigned int d = 0; d < dim; ++d)
       fine->n_basis[d] = space.knot_vector(d).n_basis();
-    fine->index.resize(space.n_basis());
-    fine->owned      = dofs.locally_owned_dofs();
-    fine->n_unknowns = dofs.n_dofs();
+    fine->index.resize(fine->n_natural());
+    fine->owned      = owned;
+    fine->n_unknowns = owned.size();
     std::vector<unsigned int> constrained_here;
-    for (unsigned int i = 0; i < space.n_basis(); ++i)
+    for (unsigned int I = 0; I < fine->n_natural(); ++I)
       {
-        const auto g   = dofs.dof_index(i);
-        fine->index[i] = g;
-        if (fine->owned.is_element(g) && constraints.is_constrained(g))
-          {
-            AssertThrow(!constraints.is_inhomogeneously_constrained(g)
-                          && constraints.get_constraint_entries(g)->empty(),
-                        ExcMessage("SplineMultigrid: only homogeneous "
-                                   "Dirichlet constraints (x_i = 0)."));
-            constrained_here.push_back(i);
-          }
+        const auto g   = unknown(I / nc, I % nc);
+        fine->index[I] = g;
+        if (fine->owned.is_element(g) && is_constrained(g))
+          constrained_here.push_back(I);
       }
-    std::vector<bool> constrained(space.n_basis(), false);
+    std::vector<bool> constrained(fine->n_natural(), false);
     for (const auto &v :
          Utilities::MPI::all_gather(communicator, constrained_here))
       for (const unsigned int i : v)
@@ -150,8 +192,9 @@ namespace vesicle_iga
         if (n_kept <= (prm.coarse_size > 0 ? prm.coarse_size :
                                              (dim == 2 ? 4000u : 1000u)))
           break;
-        auto c         = std::make_unique<Level>();
-        bool coarsened = false;
+        auto c = std::make_unique<Level>();
+        c->nc  = nc;
+        bool                                              coarsened = false;
         std::array<std::vector<std::vector<double>>, dim> P1;
         for (unsigned int d = 0; d < dim; ++d)
           {
@@ -175,13 +218,14 @@ namespace vesicle_iga
                 if (P1[d][i][j] != 0.)
                   nz[d][i].emplace_back(j, P1[d][i][j]);
           }
-        // The row of P for fine natural index I: tensor product.
+        // The row of P for fine natural index I: tensor product, the same
+        // component.
         const auto for_row = [&](const unsigned int I, const auto &action) {
           const auto                    m = f.multi_index(I);
           std::array<unsigned int, dim> k{};
           while (true)
             {
-              unsigned int J = 0, stride = 1;
+              unsigned int J = I % nc, stride = nc;
               double       v = 1;
               for (unsigned int d = 0; d < dim; ++d)
                 {

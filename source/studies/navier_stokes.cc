@@ -13,6 +13,7 @@
 
 #include <vesicle_iga/assembly/assembler.h>
 #include <vesicle_iga/base/input_error.h>
+#include <vesicle_iga/io/checkpoint.h>
 #include <vesicle_iga/io/spline_output.h>
 #include <vesicle_iga/io/time_series.h>
 #include <vesicle_iga/parallel/natural_numbering.h>
@@ -115,6 +116,8 @@ namespace vesicle_iga
       std::string                pressure_level;
       double       dt0, dt_max, dt_growth, end_time, steady_tolerance, rho_inf;
       unsigned int max_steps, quadrature_points, vtu_interval;
+      unsigned int checkpoint_interval;
+      std::string  restart_file;
       bool         pressure_at_end;
     };
 
@@ -127,7 +130,7 @@ namespace vesicle_iga
       prm.enter_subsection(section);
       box.parse(prm, dim);
       convergence.parse(prm, 0);
-      linear_solver.parse(prm);
+      linear_solver.parse_flow(prm);
       reynolds_number     = prm.get_double("Reynolds number");
       viscosity_text      = prm.get("Viscosity");
       force_text          = prm.get("Body force");
@@ -163,15 +166,17 @@ namespace vesicle_iga
           prm.leave_subsection();
         }
       prm.enter_subsection("Time stepping");
-      dt0              = prm.get_double("Time step");
-      dt_max           = prm.get_double("Max time step");
-      dt_growth        = prm.get_double("Time step growth");
-      end_time         = prm.get_double("End time");
-      max_steps        = prm.get_integer("Max steps");
-      steady_tolerance = prm.get_double("Steady tolerance");
-      rho_inf          = prm.get_double("rho_inf");
-      pressure_at_end  = prm.get("Pressure time level") == "t_n+1";
-      vtu_interval     = prm.get_integer("VTU interval");
+      dt0                 = prm.get_double("Time step");
+      dt_max              = prm.get_double("Max time step");
+      dt_growth           = prm.get_double("Time step growth");
+      end_time            = prm.get_double("End time");
+      max_steps           = prm.get_integer("Max steps");
+      steady_tolerance    = prm.get_double("Steady tolerance");
+      rho_inf             = prm.get_double("rho_inf");
+      pressure_at_end     = prm.get("Pressure time level") == "t_n+1";
+      vtu_interval        = prm.get_integer("VTU interval");
+      checkpoint_interval = prm.get_integer("Checkpoint interval");
+      restart_file        = prm.get("Restart from");
       prm.leave_subsection();
       prm.enter_subsection("Newton");
       newton.relative_tolerance = prm.get_double("Relative tolerance");
@@ -198,6 +203,13 @@ namespace vesicle_iga
                   prefix + "Time stepping/rho_inf",
                   std::to_string(rho_inf),
                   "in [0, 1]");
+      check_input(restart_file.empty()
+                    || (convergence.degrees.size() == 1
+                        && convergence.refinements == 0),
+                  prefix + "Time stepping/Restart from",
+                  restart_file,
+                  "empty for a convergence study (several degrees or "
+                  "refinements); a restart continues a single run");
       for (const unsigned int p : convergence.degrees)
         box.make_space<dim>(p, convergence.continuity);
       for (unsigned int b = 0; b < n_boundaries; ++b)
@@ -294,6 +306,45 @@ namespace vesicle_iga
       const auto              initial = parse_function<dim>(
         initial_text, dim, 1, reynolds_number, prefix + "Initial velocity");
       solver.set_initial_state(*initial, 0.);
+      double       dt   = dt0;
+      unsigned int step = 0;
+      if (!restart_file.empty())
+        {
+          const Checkpoint c = Checkpoint::read(restart_file,
+                                                context.communicator,
+                                                {"solution", "rate"},
+                                                {"t", "dt", "step", "n_basis"});
+          check_input(c.scalars.at("n_basis") == space.n_basis(),
+                      prefix + "Time stepping/Restart from",
+                      restart_file,
+                      "a checkpoint of the same mesh and degree (it has "
+                        + std::to_string(int(c.scalars.at("n_basis")))
+                        + " basis functions, this run "
+                        + std::to_string(space.n_basis()) + ")");
+          TrilinosWrappers::MPI::Vector solution(solver.owned_solution()),
+            rate(solver.owned_rate());
+          scatter_natural(solver.dofs(), c.vectors.at("solution"), solution);
+          scatter_natural(solver.dofs(), c.vectors.at("rate"), rate);
+          solver.set_state(solution, rate, c.scalars.at("t"));
+          dt   = c.scalars.at("dt");
+          step = static_cast<unsigned int>(c.scalars.at("step"));
+          context.pcout << "restart from " << restart_file << ": step " << step
+                        << ", t = " << solver.time() << ", dt = " << dt
+                        << std::endl;
+        }
+      const auto write_checkpoint = [&]() {
+        TimerOutput::Scope scope(timer, "output");
+        Checkpoint         c;
+        c.vectors["solution"]
+          = gather_natural(solver.dofs(), solver.owned_solution());
+        c.vectors["rate"] = gather_natural(solver.dofs(), solver.owned_rate());
+        c.scalars         = {{"t", solver.time()},
+                             {"dt", dt},
+                             {"step", double(step)},
+                             {"n_basis", double(space.n_basis())}};
+        c.write(context.output_directory + "/checkpoint.h5",
+                context.communicator);
+      };
 
       const std::string tag
         = "p" + std::to_string(p) + "-level" + std::to_string(r);
@@ -309,7 +360,8 @@ namespace vesicle_iga
                                "kinetic_energy",
                                "divergence_l2",
                                "relative_change"},
-                              context.communicator);
+                              context.communicator,
+                              restart_file.empty() ? -1 : long(step));
       context.pcout
         << "Navier-Stokes (RBVMS): " << dim << "D, degree " << p << ", C^"
         << (convergence.continuity < 0 ? int(p) - 1 : convergence.continuity)
@@ -348,12 +400,10 @@ namespace vesicle_iga
                      "flow-" + (single_run ? "" : tag + "-")
                        + Utilities::int_to_string(step, 5));
       };
-      if (vtu_interval > 0 && convergence.write_vtu)
+      if (vtu_interval > 0 && convergence.write_vtu && restart_file.empty())
         write_vtu(0);
 
-      double       dt     = dt0;
-      unsigned int step   = 0;
-      bool         steady = false;
+      bool steady = false;
       while (solver.time() < end_time * (1 - 1e-12) && step < max_steps)
         {
           double step_dt = std::min(dt, end_time - solver.time());
@@ -372,6 +422,8 @@ namespace vesicle_iga
                             << "): retry with dt = " << step_dt << std::endl;
               result = solver.advance(step_dt);
             }
+          if (!result.converged && single_run)
+            write_checkpoint();
           check_input(result.converged,
                       prefix + "Time stepping/Time step",
                       std::to_string(dt0),
@@ -381,7 +433,8 @@ namespace vesicle_iga
                         + " did not converge even with dt = "
                         + std::to_string(step_dt)
                         + "; the run stops here (the time series so far is "
-                          "kept)");
+                          "kept, and the last accepted state in "
+                          "checkpoint.h5)");
           ++step;
           previous.add(-1., solver.owned_solution());
           const double change
@@ -409,12 +462,17 @@ namespace vesicle_iga
               && step % vtu_interval == 0)
             write_vtu(step);
           if (steady_tolerance > 0 && change < steady_tolerance)
-            {
-              steady = true;
-              break;
-            }
-          dt = std::min(dt * dt_growth, dt_max);
+            steady = true;
+          else
+            dt = std::min(dt * dt_growth, dt_max);
+          if (single_run && checkpoint_interval > 0
+              && step % checkpoint_interval == 0)
+            write_checkpoint();
+          if (steady)
+            break;
         }
+      if (single_run)
+        write_checkpoint();
       if (steady_tolerance > 0)
         context.pcout << (steady ? "steady: relative change below " :
                                    "NOT steady: relative change above ")
@@ -565,7 +623,7 @@ namespace vesicle_iga
         prm.enter_subsection(section);
         BoxSpaceParameters::declare(prm, "0", "1", "8");
         ConvergenceParameters::declare(prm, "2", "0");
-        LinearSolverParameters::declare(prm, "gmres-ilu", "1e-10");
+        LinearSolverParameters::declare_flow(prm, "fgmres-block", "1e-10");
         prm.declare_entry("Reynolds number",
                           "100",
                           Patterns::Double(),
@@ -684,6 +742,21 @@ namespace vesicle_iga
                           "Write velocity, pressure and vorticity every so "
                           "many steps (0: final state only; 'Write VTU' "
                           "switches output off).");
+        prm.declare_entry("Checkpoint interval",
+                          "10",
+                          Patterns::Integer(0),
+                          "Write <Output directory>/checkpoint.h5 (velocity, "
+                          "pressure, their rates, t, dt, step) every N steps "
+                          "of a single run (0: only at the end and when a "
+                          "step fails).");
+        prm.declare_entry("Restart from",
+                          "",
+                          Patterns::Anything(),
+                          "A checkpoint.h5 of a flow run with the same mesh "
+                          "and degree (any number of ranks) to continue "
+                          "from; time-series.csv keeps its rows up to the "
+                          "checkpoint's step. Empty: start from 'Initial "
+                          "velocity'.");
         prm.leave_subsection();
         prm.enter_subsection("Newton");
         prm.declare_entry("Relative tolerance",

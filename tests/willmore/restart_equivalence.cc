@@ -9,25 +9,12 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 
-#include <vesicle_iga/app/program.h>
-
 #include <cmath>
 #include <fstream>
 #include <iostream>
 #include <sstream>
 
-std::vector<std::vector<double>>
-read_csv(const std::string &name)
-{
-  std::ifstream                    f(name);
-  std::string                      line;
-  std::vector<std::vector<double>> rows;
-  std::getline(f, line); // header
-  while (std::getline(f, line))
-    rows.push_back(dealii::Utilities::string_to_double(
-      dealii::Utilities::split_string_list(line, ',')));
-  return rows;
-}
+#include "../time_series_comparison.h"
 
 int
 main(int argc, char *argv[])
@@ -47,16 +34,8 @@ main(int argc, char *argv[])
       "set Upper corner = 3.2\nset Elements = 32\nend\n"
       "subsection Time step\nset Initial dt = 1e-3\n"
       "set Max dt = 0.05\nend\n";
-  const auto run = [&](const std::string &text) {
-    if (root)
-      std::ofstream("case.prm") << common << text;
-    MPI_Barrier(MPI_COMM_WORLD);
-    std::ostringstream captured;
-    auto              *old  = std::cout.rdbuf(captured.rdbuf());
-    const int          code = vesicle_iga::run_program({"case.prm"});
-    std::cout.rdbuf(old);
-    return code;
-  };
+  const auto run
+    = [&](const std::string &text) { return run_study_quietly(common + text); };
   const int a
     = run("set Max steps = 8\nend\nset Output directory = straight\n");
   const int b
@@ -65,21 +44,7 @@ main(int argc, char *argv[])
                     "restarted/checkpoint.h5\nend\n"
                     "set Output directory = restarted\n");
   out << "exit codes " << a << ' ' << b << ' ' << c << '\n';
-  const auto straight  = read_csv("straight/time-series.csv");
-  const auto restarted = read_csv("restarted/time-series.csv");
-  out << "rows: " << straight.size() << " and " << restarted.size() << '\n';
-  double diff = 0;
-  for (unsigned int i = 0; i < std::min(straight.size(), restarted.size()); ++i)
-    for (unsigned int j = 0; j < straight[i].size(); ++j)
-      diff = std::max(diff,
-                      std::abs(straight[i][j] - restarted[i][j])
-                        / (1e-3 + std::abs(straight[i][j])));
-  out << "final row, uninterrupted:";
-  for (const double x : straight.back())
-    out << ' ' << x;
-  out << "\nfinal row, restarted:   ";
-  for (const double x : restarted.back())
-    out << ' ' << x;
-  out << "\nlargest relative difference over all rows: "
-      << (diff < 1e-9 ? "below 1e-9" : std::to_string(diff)) << '\n';
+  report_restart_equivalence(out,
+                             "straight/time-series.csv",
+                             "restarted/time-series.csv");
 }

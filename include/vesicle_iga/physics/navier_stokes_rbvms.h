@@ -57,6 +57,33 @@ namespace vesicle_iga
   };
 
   /**
+   * What every term of the flow residual shares: the unknowns' numbering,
+   * the coefficients and the state of the step (levels and factors),
+   * which the solver sets before each assembly.
+   */
+  template <int dim>
+  class FlowTerm : public AssemblyTerm<dim>
+  {
+  public:
+    FlowTerm(const SplineDofHandler<dim> &dofs,
+             const FlowCoefficients<dim> &coefficients)
+      : dofs(dofs)
+      , coefficients(coefficients)
+    {}
+
+    void
+    set_state(const FlowState &state)
+    {
+      this->state = state;
+    }
+
+  protected:
+    const SplineDofHandler<dim> &dofs;
+    const FlowCoefficients<dim> &coefficients;
+    FlowState                    state;
+  };
+
+  /**
    * The incompressible Navier-Stokes equations (H4)-(H5) without vesicle
    * forces, stabilised by residual-based variational multiscale (RBVMS),
    * in the weak form (H14) with the fine scales (H18a)
@@ -77,17 +104,10 @@ namespace vesicle_iga
    * right-hand side, so Newton solves K d(rate) = -R.
    */
   template <int dim>
-  class NavierStokesRBVMS : public AssemblyTerm<dim>
+  class NavierStokesRBVMS : public FlowTerm<dim>
   {
   public:
-    NavierStokesRBVMS(const SplineDofHandler<dim> &dofs,
-                      const FlowCoefficients<dim> &coefficients);
-
-    void
-    set_state(const FlowState &state)
-    {
-      this->state = state;
-    }
+    using FlowTerm<dim>::FlowTerm;
 
     unsigned int
     derivative_order() const override
@@ -99,10 +119,43 @@ namespace vesicle_iga
                   FullMatrix<double>          &matrix,
                   Vector<double>              &rhs) const override;
 
+
   private:
-    const SplineDofHandler<dim> &dofs;
-    const FlowCoefficients<dim> &coefficients;
-    FlowState                    state;
+    using FlowTerm<dim>::dofs;
+    using FlowTerm<dim>::coefficients;
+    using FlowTerm<dim>::state;
+  };
+
+  /**
+   * The lumped operators of the Cahouet-Chabard Schur-complement
+   * approximation of the block preconditioner (FlowBlockPreconditioner,
+   * doc/flow.md), at the state of the step: on the velocity rows the
+   * lumped transient mass  k_m int N_i  (k_m = alpha_m, the factor of the
+   * velocity rate in the tangent), on the pressure rows the lumped
+   * viscous pressure mass  k_p int N_i / (mu* / Re + tau_C), the inverse
+   * viscosity of the Stokes Schur complement augmented by the grad-div
+   * coefficient tau_C of (H19). Written to the right-hand side only.
+   */
+  template <int dim>
+  class RBVMSLumpedSchurOperators : public FlowTerm<dim>
+  {
+  public:
+    using FlowTerm<dim>::FlowTerm;
+    unsigned int
+    derivative_order() const override
+    {
+      return 1;
+    }
+    void
+    assemble_cell(const SplineCellValues<dim> &values,
+                  FullMatrix<double>          &matrix,
+                  Vector<double>              &rhs) const override;
+
+
+  private:
+    using FlowTerm<dim>::dofs;
+    using FlowTerm<dim>::coefficients;
+    using FlowTerm<dim>::state;
   };
 
   /**
@@ -114,7 +167,7 @@ namespace vesicle_iga
    * inflow term -(w, (u.m)_- (u - u_b)) on the part where u.m < 0.
    */
   template <int dim>
-  class WeakVelocityDirichlet : public AssemblyTerm<dim>
+  class WeakVelocityDirichlet : public FlowTerm<dim>
   {
   public:
     WeakVelocityDirichlet(const SplineDofHandler<dim>  &dofs,
@@ -124,11 +177,6 @@ namespace vesicle_iga
                           const double                  penalty_constant,
                           const bool                    inflow_term);
 
-    void
-    set_state(const FlowState &state)
-    {
-      this->state = state;
-    }
     unsigned int
     derivative_order() const override
     {
@@ -151,12 +199,12 @@ namespace vesicle_iga
                   Vector<double>              &rhs) const override;
 
   private:
-    const SplineDofHandler<dim>  &dofs;
-    const FlowCoefficients<dim>  &coefficients;
+    using FlowTerm<dim>::dofs;
+    using FlowTerm<dim>::coefficients;
+    using FlowTerm<dim>::state;
     const BoundarySelection<dim> &selection;
     const Function<dim>          &boundary_velocity;
     const double                  penalty_constant;
     const bool                    inflow_term;
-    FlowState                     state;
   };
 } // namespace vesicle_iga

@@ -22,20 +22,56 @@ namespace vesicle_iga
    *  - direct: Amesos KLU (gathers the matrix: small problems and fourth
    *    order operators, on which AMG is not robust);
    *  - gmres-mg, cg-mg: one V-cycle of the geometric spline multigrid
-   *    (SplineMultigrid), robust for the fourth-order operators of Part E.
+   *    (SplineMultigrid), robust for the fourth-order operators of Part E;
+   *  - fgmres-block: flexible GMRES with the velocity-pressure block
+   *    preconditioner of the flow solver (FlowBlockPreconditioner).
    */
+  /// Settings of the velocity-pressure block preconditioner
+  /// (FlowBlockPreconditioner; subsection "Linear solver/Block
+  /// preconditioner" of the flow study).
+  struct FlowBlockPreconditionerParameters
+  {
+    /// AMG smoother sweeps on the velocity block and on the Schur block.
+    unsigned int velocity_sweeps = 3;
+    unsigned int schur_sweeps    = 2;
+    /// Smoother of the velocity spline multigrid: ssor, chebyshev or ilu.
+    std::string velocity_smoother = "chebyshev";
+    /// Largest level of the velocity spline multigrid solved by LU (0:
+    /// the SplineMultigrid default).
+    unsigned int velocity_coarse_size = 0;
+    /// Symmetric smoothed aggregation with Chebyshev smoothing on the
+    /// velocity block, or non-symmetric smoothed aggregation.
+    bool velocity_elliptic = true;
+    /// "spline-multigrid" or "amg" on the velocity block.
+    std::string velocity_preconditioner = "spline-multigrid";
+    /// "cahouet-chabard" or "simple" (see FlowBlockPreconditioner).
+    std::string schur_approximation = "cahouet-chabard";
+
+    static void
+    declare(ParameterHandler &prm);
+    void
+    parse(ParameterHandler &prm);
+  };
+
   struct LinearSolverParameters
   {
-    std::string               method         = "cg-amg";
-    double                    tolerance      = 1e-12;
-    unsigned int              max_iterations = 5000;
-    SplineMultigridParameters multigrid;
+    std::string                       method         = "cg-amg";
+    double                            tolerance      = 1e-12;
+    unsigned int                      max_iterations = 5000;
+    SplineMultigridParameters         multigrid;
+    FlowBlockPreconditionerParameters block;
 
     /// Whether the method needs a SplineMultigrid from the caller.
     bool
     uses_multigrid() const
     {
       return method == "gmres-mg" || method == "cg-mg";
+    }
+    /// Whether the caller builds the preconditioner (multigrid, block).
+    bool
+    uses_caller_preconditioner() const
+    {
+      return uses_multigrid() || method == "fgmres-block";
     }
 
     static void
@@ -46,6 +82,16 @@ namespace vesicle_iga
             const std::string &default_sweeps    = "2");
     void
     parse(ParameterHandler &prm);
+
+    /// The flow solver's choice: gmres-ilu, gmres-amg, direct or
+    /// fgmres-block, with the Block preconditioner subsection instead of
+    /// the Multigrid one.
+    static void
+    declare_flow(ParameterHandler  &prm,
+                 const std::string &default_method,
+                 const std::string &default_tolerance);
+    void
+    parse_flow(ParameterHandler &prm);
   };
 
   struct LinearSolveResult
@@ -55,13 +101,14 @@ namespace vesicle_iga
   };
 
   /// Solve A x = b (relative tolerance), then set the constrained entries.
-  /// The multigrid methods need @p multigrid, initialized by the caller
-  /// (with A, or with an earlier matrix when the caller reuses it).
+  /// The multigrid and block methods need @p caller_preconditioner,
+  /// initialized by the caller (with A, or with an earlier matrix when the
+  /// caller reuses it).
   LinearSolveResult
   solve_linear_system(const LinearSolverParameters         &parameters,
                       const TrilinosWrappers::SparseMatrix &A,
                       TrilinosWrappers::MPI::Vector        &x,
                       const TrilinosWrappers::MPI::Vector  &b,
                       const AffineConstraints<double>      &constraints,
-                      MatrixPreconditioner *multigrid = nullptr);
+                      MatrixPreconditioner *caller_preconditioner = nullptr);
 } // namespace vesicle_iga

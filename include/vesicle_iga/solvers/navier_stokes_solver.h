@@ -13,6 +13,7 @@
 #include <vesicle_iga/parallel/patch_mesh.h>
 #include <vesicle_iga/parallel/spline_dof_handler.h>
 #include <vesicle_iga/physics/navier_stokes_rbvms.h>
+#include <vesicle_iga/solvers/flow_block_preconditioner.h>
 #include <vesicle_iga/solvers/linear_solver.h>
 #include <vesicle_iga/time/generalized_alpha.h>
 
@@ -186,15 +187,19 @@ namespace vesicle_iga
     TimerOutput                              &timer;
 
     NavierStokesRBVMS<dim>                                   rbvms;
+    RBVMSLumpedSchurOperators<dim>                           lumped_schur;
     std::vector<std::unique_ptr<WeakVelocityDirichlet<dim>>> weak_terms;
     std::vector<AssemblyTerm<dim> *>                         extra_terms;
 
     AffineConstraints<double>      constraints, increment_constraints;
     types::global_dof_index        pinned_pressure;
     TrilinosWrappers::SparseMatrix system_matrix;
-    TrilinosWrappers::MPI::Vector  U, U_rate;                  // at t_n
-    TrilinosWrappers::MPI::Vector  U_alpha, rate_alpha, U_end; // ghosted
-    TrilinosWrappers::MPI::Vector  ghosted_solution;
-    double                         t = 0;
+    /// Method fgmres-block only.
+    std::unique_ptr<FlowBlockPreconditioner> block_preconditioner;
+    bool                                     velocity_multigrid_set = false;
+    TrilinosWrappers::MPI::Vector            U, U_rate;       // at t_n
+    TrilinosWrappers::MPI::Vector U_alpha, rate_alpha, U_end; // ghosted
+    TrilinosWrappers::MPI::Vector ghosted_solution;
+    double                        t = 0;
   };
 } // namespace vesicle_iga

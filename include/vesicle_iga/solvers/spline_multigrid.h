@@ -8,6 +8,7 @@
 
 #include <vesicle_iga/parallel/spline_dof_handler.h>
 
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -76,6 +77,20 @@ namespace vesicle_iga
     SplineMultigrid(const SplineDofHandler<dim>     &dofs,
                     const AffineConstraints<double> &zero_constraints,
                     const SplineMultigridParameters &parameters);
+    /// A vector-valued field of @p n_components components on the spline
+    /// space of @p dofs: @p unknown(basis, component) gives the matrix row
+    /// of each (natural basis index, component), @p owned the rows of this
+    /// rank (whole basis functions, contiguous), @p constrained the rows
+    /// that are homogeneous Dirichlet rows. Every component is coarsened
+    /// by the same knot removal (the velocity block of the flow solver).
+    SplineMultigrid(
+      const SplineDofHandler<dim> &dofs,
+      const unsigned int           n_components,
+      const std::function<types::global_dof_index(unsigned int, unsigned int)>
+                                                         &unknown,
+      const IndexSet                                     &owned,
+      const std::function<bool(types::global_dof_index)> &constrained,
+      const SplineMultigridParameters                    &parameters);
     ~SplineMultigrid() override;
 
     void
@@ -94,6 +109,13 @@ namespace vesicle_iga
 
   private:
     struct Level;
+    void
+    setup(const SplineSpace<dim> &space,
+          const unsigned int      n_components,
+          const std::function<types::global_dof_index(unsigned int,
+                                                      unsigned int)> &unknown,
+          const IndexSet                                             &owned,
+          const std::function<bool(types::global_dof_index)> &constrained);
     void
     v_cycle(const unsigned int                   l,
             TrilinosWrappers::MPI::Vector       &x,

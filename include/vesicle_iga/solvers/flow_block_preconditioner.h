@@ -1,0 +1,102 @@
+#pragma once
+
+#include <deal.II/base/index_set.h>
+
+#include <deal.II/lac/trilinos_precondition.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <vesicle_iga/solvers/linear_solver.h>
+#include <vesicle_iga/solvers/spline_multigrid.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace vesicle_iga
+{
+  using namespace dealii;
+
+  /**
+   * Block upper-triangular preconditioner of the RBVMS velocity-pressure
+   * tangent (doc/flow.md, "Linear solver"):
+   *
+   *   K = [A  B]      P = [A  B]       S ~ C - D A^{-1} B,
+   *       [D  C],         [0  S],
+   *
+   * with A the velocity block (mass, viscous, convective and fine-scale
+   * terms), B and D the pressure-gradient and divergence couplings and C
+   * the pressure block that the RBVMS term (grad q, tau_M grad p) of (H14)
+   * makes positive definite. A^{-1} is one V-cycle of the caller's velocity
+   * preconditioner (the spline multigrid of the velocity components, see
+   * set_velocity_preconditioner()) or of Trilinos ML AMG with one
+   * null-space vector per velocity component. Two Schur approximations:
+   *
+   *  - cahouet-chabard (default): S^{-1} = M_nu^{-1} + S_t^{-1}, the
+   *    viscous part M_nu the lumped pressure mass weighted by
+   *    k_p / (mu* / Re + tau_C) (Stokes Schur complement with the grad-div
+   *    term), the transient part S_t = C - D M_L^{-1} B with M_L the lumped
+   *    velocity mass k_m int N_i (a pressure Laplacian built algebraically
+   *    by a Trilinos matrix product, inverted by one AMG V-cycle). Both
+   *    limits (steady Stokes, small steps) are spectrally equivalent to
+   *    the true Schur complement independently of h, so the Krylov count
+   *    should not grow under refinement; it grows with the Reynolds number
+   *    of the step, as convection is not in S.
+   *  - simple: S = C - D diag(A)^{-1} B, fully algebraic; in viscous flows
+   *    diag(A) ~ nu / h^2 makes S too small for smooth pressures and the
+   *    count doubles per refinement (measured in doc/flow.md).
+   *
+   * The lumped operators come from RBVMSLumpedSchurOperators, in the
+   * monolithic layout, through set_lumped_operators() before initialize().
+   *
+   * The unknowns of the monolithic matrix are interleaved per spline basis
+   * function (u_1, ..., u_dim, p) and every rank owns whole basis
+   * functions (SplineDofHandler), so the blocks are extracted row by row
+   * without communication.
+   */
+  class FlowBlockPreconditioner : public MatrixPreconditioner
+  {
+  public:
+    FlowBlockPreconditioner(const unsigned int                       dim,
+                            const FlowBlockPreconditionerParameters &prm);
+
+    /// One V-cycle of @p velocity (initialized by initialize() with the
+    /// velocity block, numbered basis * dim + component) replaces AMG.
+    void
+    set_velocity_preconditioner(std::unique_ptr<MatrixPreconditioner> velocity);
+    /// The lumped velocity mass (velocity entries) and lumped viscous
+    /// pressure mass (pressure entries) of the coming matrix.
+    void
+    set_lumped_operators(const TrilinosWrappers::MPI::Vector &lumped);
+    void
+    initialize(const TrilinosWrappers::SparseMatrix &matrix) override;
+    void
+    vmult(TrilinosWrappers::MPI::Vector       &dst,
+          const TrilinosWrappers::MPI::Vector &src) const override;
+    std::string
+    description() const override;
+
+  private:
+    void
+    split(const TrilinosWrappers::MPI::Vector &full,
+          TrilinosWrappers::MPI::Vector       &velocity,
+          TrilinosWrappers::MPI::Vector       &pressure) const;
+
+    const unsigned int                      dim;
+    const FlowBlockPreconditionerParameters prm;
+
+    IndexSet velocity_owned, pressure_owned;
+    // For each locally owned entry of the monolithic vector: its position
+    // in the local part of the velocity (>= 0) or pressure (< 0: -1 - k)
+    // vector.
+    std::vector<long> local_position;
+
+    TrilinosWrappers::MPI::Vector lumped;
+    std::vector<double> inverse_viscous_mass; // local pressure entries
+    TrilinosWrappers::SparseMatrix        A, B, D, S;
+    TrilinosWrappers::PreconditionAMG     A_inverse, S_inverse;
+    std::unique_ptr<MatrixPreconditioner> velocity_preconditioner;
+    mutable TrilinosWrappers::MPI::Vector u, p, r_u, r_p, tmp_u;
+    bool                                  cahouet_chabard;
+  };
+} // namespace vesicle_iga

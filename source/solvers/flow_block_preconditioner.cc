@@ -1,0 +1,307 @@
+// Block preconditioner of the RBVMS velocity-pressure tangent. See the
+// header and doc/flow.md ("Linear solver").
+
+#include <deal.II/lac/trilinos_index_access.h>
+#include <deal.II/lac/trilinos_sparsity_pattern.h>
+
+#include <vesicle_iga/solvers/flow_block_preconditioner.h>
+
+#include <Epetra_CrsMatrix.h>
+#include <algorithm>
+#include <sstream>
+#include <utility>
+
+namespace vesicle_iga
+{
+  namespace
+  {
+    using Row = std::vector<std::pair<types::global_dof_index, double>>;
+
+    /// Call @p f(column, value) for the entries of the locally owned row
+    /// @p row (global indices). Through Epetra's row view: deal.II's row
+    /// iterators allocate a buffer of the global column count per row.
+    template <typename F>
+    void
+    for_each_entry(const TrilinosWrappers::SparseMatrix &matrix,
+                   const types::global_dof_index         row,
+                   const F                              &f)
+    {
+      const Epetra_CrsMatrix &m = matrix.trilinos_matrix();
+      int                     n = 0;
+      double                 *values;
+      int                    *columns;
+      m.ExtractMyRowView(m.LRID(
+                           static_cast<TrilinosWrappers::types::int_type>(row)),
+                         n,
+                         values,
+                         columns);
+      for (int k = 0; k < n; ++k)
+        f(types::global_dof_index(
+            TrilinosWrappers::global_column_index(m, columns[k])),
+          values[k]);
+    }
+
+
+    /// A distributed matrix with the locally owned rows @p rows (the k-th
+    /// is the k-th element of @p row_set; global column indices).
+    void
+    make_matrix(const IndexSet                 &row_set,
+                const IndexSet                 &column_set,
+                const MPI_Comm                  comm,
+                std::vector<Row>               &rows,
+                TrilinosWrappers::SparseMatrix &matrix)
+    {
+      TrilinosWrappers::SparsityPattern    sparsity(row_set, column_set, comm);
+      std::vector<types::global_dof_index> columns;
+      std::vector<double>                  values;
+      for (std::size_t k = 0; k < rows.size(); ++k)
+        {
+          std::sort(rows[k].begin(), rows[k].end());
+          columns.clear();
+          for (const auto &entry : rows[k])
+            columns.push_back(entry.first);
+          sparsity.add_entries(row_set.nth_index_in_set(k),
+                               columns.begin(),
+                               columns.end());
+        }
+      sparsity.compress();
+      matrix.reinit(sparsity);
+      for (std::size_t k = 0; k < rows.size(); ++k)
+        {
+          columns.clear();
+          values.clear();
+          for (const auto &entry : rows[k])
+            {
+              columns.push_back(entry.first);
+              values.push_back(entry.second);
+            }
+          if (!columns.empty())
+            matrix.set(row_set.nth_index_in_set(k),
+                       columns.size(),
+                       columns.data(),
+                       values.data());
+        }
+      matrix.compress(VectorOperation::insert);
+    }
+  } // namespace
+
+
+  FlowBlockPreconditioner::FlowBlockPreconditioner(
+    const unsigned int                       dim,
+    const FlowBlockPreconditionerParameters &prm)
+    : dim(dim)
+    , prm(prm)
+    , cahouet_chabard(prm.schur_approximation == "cahouet-chabard")
+  {}
+
+
+  void
+  FlowBlockPreconditioner::set_velocity_preconditioner(
+    std::unique_ptr<MatrixPreconditioner> velocity)
+  {
+    velocity_preconditioner = std::move(velocity);
+  }
+
+
+  void
+  FlowBlockPreconditioner::set_lumped_operators(
+    const TrilinosWrappers::MPI::Vector &lumped_operators)
+  {
+    lumped = lumped_operators;
+  }
+
+
+  void
+  FlowBlockPreconditioner::initialize(
+    const TrilinosWrappers::SparseMatrix &matrix)
+  {
+    const MPI_Comm     comm    = matrix.get_mpi_communicator();
+    const IndexSet    &owned   = matrix.locally_owned_range_indices();
+    const unsigned int nc      = dim + 1;
+    const auto         n_basis = matrix.m() / nc;
+
+    // Index sets of the blocks and the local positions (the maps from
+    // monolithic to block indices are monotone, so local order is kept).
+    velocity_owned = IndexSet(n_basis * dim);
+    pressure_owned = IndexSet(n_basis);
+    local_position.clear();
+    long n_velocity = 0, n_pressure = 0;
+    for (const auto i : owned)
+      {
+        const auto b = i / nc, c = i % nc;
+        if (c < dim)
+          {
+            velocity_owned.add_index(b * dim + c);
+            local_position.push_back(n_velocity++);
+          }
+        else
+          {
+            pressure_owned.add_index(b);
+            local_position.push_back(-1 - n_pressure++);
+          }
+      }
+    velocity_owned.compress();
+    pressure_owned.compress();
+
+    // Split the owned rows into the four blocks.
+    std::vector<Row> rows_A(n_velocity), rows_B(n_velocity), rows_D(n_pressure),
+      rows_C(n_pressure);
+    std::size_t k = 0;
+    for (const auto i : owned)
+      {
+        const long position = local_position[k++];
+        for_each_entry(matrix, i, [&](const auto j, const double value) {
+          const auto b = j / nc, c = j % nc;
+          const bool column_velocity = c < dim;
+          const auto column          = column_velocity ? b * dim + c : b;
+          if (position >= 0)
+            (column_velocity ? rows_A : rows_B)[position].emplace_back(column,
+                                                                       value);
+          else
+            (column_velocity ? rows_D : rows_C)[-1 - position].emplace_back(
+              column, value);
+        });
+      }
+    make_matrix(velocity_owned, velocity_owned, comm, rows_A, A);
+    make_matrix(velocity_owned, pressure_owned, comm, rows_B, B);
+    make_matrix(pressure_owned, velocity_owned, comm, rows_D, D);
+
+    // The diagonal that replaces A in the Schur complement: the lumped
+    // velocity mass (Cahouet-Chabard) or diag(A) (SIMPLE).
+    AssertThrow(!cahouet_chabard || lumped.size() == matrix.m(),
+                ExcMessage("FlowBlockPreconditioner: set_lumped_operators() "
+                           "was not called"));
+    TrilinosWrappers::MPI::Vector minus_inverse_diagonal(velocity_owned, comm);
+    inverse_viscous_mass.assign(n_pressure, 0.);
+    {
+      const double *l = cahouet_chabard ? lumped.begin() : nullptr;
+      for (k = 0; k < local_position.size(); ++k)
+        {
+          const long position = local_position[k];
+          if (position >= 0)
+            {
+              const auto   row = velocity_owned.nth_index_in_set(position);
+              const double d   = cahouet_chabard ? l[k] : A.diag_element(row);
+              minus_inverse_diagonal[row] = d != 0 ? -1. / d : 0.;
+            }
+          else if (cahouet_chabard && l[k] != 0)
+            inverse_viscous_mass[-1 - position] = 1. / l[k];
+        }
+    }
+    minus_inverse_diagonal.compress(VectorOperation::insert);
+
+    // S = C - D diag^{-1} B: the product by Trilinos (EpetraExt), then C
+    // added row by row (the patterns differ).
+    TrilinosWrappers::SparseMatrix product;
+    D.mmult(product, B, minus_inverse_diagonal);
+    std::vector<Row> rows_S(n_pressure);
+    k = 0;
+    for (const auto i : pressure_owned)
+      {
+        Row &row = rows_S[k];
+        for_each_entry(product, i, [&](const auto j, const double value) {
+          row.emplace_back(j, value);
+        });
+        row.insert(row.end(), rows_C[k].begin(), rows_C[k].end());
+        std::sort(row.begin(), row.end());
+        // Merge equal columns.
+        Row merged;
+        for (const auto &entry : row)
+          if (!merged.empty() && merged.back().first == entry.first)
+            merged.back().second += entry.second;
+          else
+            merged.push_back(entry);
+        row = std::move(merged);
+        ++k;
+      }
+    make_matrix(pressure_owned, pressure_owned, comm, rows_S, S);
+
+    // One null-space vector per velocity component.
+    TrilinosWrappers::PreconditionAMG::AdditionalData velocity_data;
+    velocity_data.elliptic              = prm.velocity_elliptic;
+    velocity_data.higher_order_elements = true;
+    velocity_data.smoother_sweeps       = prm.velocity_sweeps;
+    velocity_data.aggregation_threshold = 0.02;
+    velocity_data.constant_modes.assign(dim,
+                                        std::vector<bool>(n_velocity, false));
+    k = 0;
+    for (const auto i : velocity_owned)
+      velocity_data.constant_modes[i % dim][k++] = true;
+    if (velocity_preconditioner)
+      velocity_preconditioner->initialize(A);
+    else
+      A_inverse.initialize(A, velocity_data);
+
+    TrilinosWrappers::PreconditionAMG::AdditionalData schur_data;
+    schur_data.elliptic              = true;
+    schur_data.higher_order_elements = true;
+    schur_data.smoother_sweeps       = prm.schur_sweeps;
+    schur_data.aggregation_threshold = 0.02;
+    S_inverse.initialize(S, schur_data);
+
+    u.reinit(velocity_owned, comm);
+    r_u.reinit(velocity_owned, comm);
+    tmp_u.reinit(velocity_owned, comm);
+    p.reinit(pressure_owned, comm);
+    r_p.reinit(pressure_owned, comm);
+  }
+
+
+  void
+  FlowBlockPreconditioner::split(const TrilinosWrappers::MPI::Vector &full,
+                                 TrilinosWrappers::MPI::Vector       &velocity,
+                                 TrilinosWrappers::MPI::Vector &pressure) const
+  {
+    auto       *v = velocity.begin();
+    auto       *q = pressure.begin();
+    const auto *f = full.begin();
+    for (std::size_t k = 0; k < local_position.size(); ++k)
+      if (local_position[k] >= 0)
+        v[local_position[k]] = f[k];
+      else
+        q[-1 - local_position[k]] = f[k];
+  }
+
+
+  void
+  FlowBlockPreconditioner::vmult(TrilinosWrappers::MPI::Vector       &dst,
+                                 const TrilinosWrappers::MPI::Vector &src) const
+  {
+    // P^{-1} = [A B; 0 S]^{-1}: p = S^{-1} r_p, u = A^{-1} (r_u - B p).
+    split(src, r_u, r_p);
+    S_inverse.vmult(p, r_p);
+    if (cahouet_chabard)
+      {
+        auto       *q = p.begin();
+        const auto *r = r_p.begin();
+        for (std::size_t k = 0; k < inverse_viscous_mass.size(); ++k)
+          q[k] += inverse_viscous_mass[k] * r[k];
+      }
+    B.vmult(tmp_u, p);
+    r_u -= tmp_u;
+    if (velocity_preconditioner)
+      velocity_preconditioner->vmult(u, r_u);
+    else
+      A_inverse.vmult(u, r_u);
+
+    auto       *d = dst.begin();
+    const auto *v = u.begin();
+    const auto *q = p.begin();
+    for (std::size_t k = 0; k < local_position.size(); ++k)
+      d[k] = local_position[k] >= 0 ? v[local_position[k]] :
+                                      q[-1 - local_position[k]];
+  }
+
+
+  std::string
+  FlowBlockPreconditioner::description() const
+  {
+    std::ostringstream s;
+    s << "block upper-triangular: "
+      << (velocity_preconditioner ? velocity_preconditioner->description() :
+                                    std::string("AMG"))
+      << " on velocity (" << A.m() << " unknowns), " << prm.schur_approximation
+      << " Schur complement approximation (" << S.m() << " unknowns)";
+    return s.str();
+  }
+} // namespace vesicle_iga

@@ -1,0 +1,54 @@
+// Restart of the flow study from a checkpoint continues the same
+// trajectory: the lid-driven cavity (Re = 100, 16^2, p = 2, pseudo-time
+// steps growing by 4) run for 8 steps at once, and the same run stopped
+// after 4 steps and restarted from its checkpoint.h5 to step 8, must give
+// the same time series (to round-off: the checkpoint stores the velocity,
+// the pressure, their generalized-alpha rates, t, the next dt and the step,
+// which is the whole state of the step). The test prints both final rows
+// and the largest relative difference over all rows of the two
+// time-series.csv files (the Krylov counts included).
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/utilities.h>
+
+#include <cmath>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+#include "../time_series_comparison.h"
+
+int
+main(int argc, char *argv[])
+{
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  const bool                               root
+    = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+  std::ofstream     out(root ? "output" : "/dev/null");
+  const std::string common
+    = "set Study = navier-stokes\n"
+      "set Print details = false\n"
+      "subsection Navier-Stokes\n"
+      "set Reynolds number = 100\n"
+      "subsection Mesh\nset Elements = 16\nend\n"
+      "subsection Boundary 1\nset Type = strong\n"
+      "set Where = x-min; x-max; y-min\nset Velocity = 0; 0\nend\n"
+      "subsection Boundary 2\nset Type = weak\nset Where = y-max\n"
+      "set Velocity = 1; 0\nend\n"
+      "subsection Time stepping\nset Time step = 0.1\n"
+      "set Max time step = 1e6\nset Time step growth = 4\n"
+      "set End time = 1e9\nset Steady tolerance = 0\nset rho_inf = 0.5\n";
+  const auto run
+    = [&](const std::string &text) { return run_study_quietly(common + text); };
+  const int a
+    = run("set Max steps = 8\nend\nend\nset Output directory = straight\n");
+  const int b
+    = run("set Max steps = 4\nend\nend\nset Output directory = restarted\n");
+  const int c = run("set Max steps = 8\nset Restart from = "
+                    "restarted/checkpoint.h5\nend\nend\n"
+                    "set Output directory = restarted\n");
+  out << "exit codes " << a << ' ' << b << ' ' << c << '\n';
+  report_restart_equivalence(out,
+                             "straight/time-series.csv",
+                             "restarted/time-series.csv");
+}

@@ -1,0 +1,45 @@
+#!/usr/bin/env bash
+# Time per step and per Newton iteration (assembly, block-preconditioner
+# set-up, FGMRES solve) and the iteration counts of the 3D channel set-up of
+# tools/bench/channel-3d.prm on 1 and 2 ranks. Usage (after tools/build.sh):
+#   tools/bench/run-channel-3d.sh [element count per direction, default 16]
+# Environment: VELOCITY (spline-multigrid or amg), RANKS (default "1 2").
+set -euo pipefail
+cd "$(dirname "$0")/../.."
+source tools/mpi-env.sh
+n=${1:-16}
+VELOCITY=${VELOCITY:-spline-multigrid}
+RANKS=${RANKS:-1 2}
+echo "3D channel, $n^3 elements, p = 2, 5 steps of dt = 1e-2, fgmres-block" \
+  "(velocity: $VELOCITY); times in seconds"
+printf "%-6s %-5s %-8s %-6s %-6s %-10s %-8s %-10s %-10s %-9s %-9s %-8s\n" \
+  cells ranks unknowns steps newton krylov/nwt s/step s/newton assembly/nwt pc/nwt solve/nwt peakMB
+for np in $RANKS; do
+  out=output/bench-channel-3d-$n-$np
+  log=$(mpirun -np $np build/vesicle-iga - <<EOP
+$(cat tools/bench/channel-3d.prm)
+set Output directory = $out
+subsection Navier-Stokes
+  subsection Mesh
+    set Elements = $n, $n, $n
+  end
+  subsection Linear solver
+    subsection Block preconditioner
+      set Velocity preconditioner = $VELOCITY
+    end
+  end
+end
+EOP
+)
+  unknowns=$(echo "$log" | sed -n 's/.* \([0-9]*\) unknowns.*/\1/p' | head -1)
+  total=$(echo "$log" | sed -n 's/^| Total wallclock time elapsed since start *| *\([0-9.e+-]*\)s.*/\1/p')
+  section() { echo "$log" | sed -n "s/^| $1 *| *[0-9]* | *\([0-9.e+-]*\)s.*/\1/p" | head -1; }
+  read -r steps newton krylov < <(awk -F, 'NR>1 {s++; n+=$4; k+=$5} END {print s, n, k}' $out/time-series.csv)
+  peak=$(echo "$log" | sed -n 's/^peak memory (VmHWM) per rank: max \([0-9.]*\) MB.*/\1/p')
+  awk -v c="$n^3" -v np=$np -v u=$unknowns -v s=$steps -v nw=$newton -v k=$krylov \
+      -v T=$total -v a="$(section 'flow assembly')" -v r="$(section 'flow residual')" \
+      -v p="$(section 'flow preconditioner setup')" -v so="$(section 'flow linear solve')" \
+      -v m=$peak 'BEGIN {
+    printf "%-6s %-5s %-8s %-6s %-6s %-10.1f %-8.2f %-10.2f %-10.2f %-9.2f %-9.2f %-8.0f\n",
+      c, np, u, s, nw, k/nw, T/s, T/nw, (a+r)/nw, p/nw, so/nw, m }'
+done
