@@ -11,6 +11,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 source tools/mpi-env.sh
+source tools/bench/log-fields.sh
 sizes=${*:-64 128 256}
 RE=${RE:-100}
 VELOCITY=${VELOCITY:-spline-multigrid}
@@ -42,14 +43,13 @@ subsection Navier-Stokes
 end
 EOP
 )
-    unknowns=$(echo "$log" | sed -n 's/.* \([0-9]*\) unknowns.*/\1/p' | head -1)
-    total=$(echo "$log" | sed -n 's/^| Total wallclock time elapsed since start *| *\([0-9.e+-]*\)s.*/\1/p')
-    section() { echo "$log" | sed -n "s/^| $1 *| *[0-9]* | *\([0-9.e+-]*\)s.*/\1/p" | head -1; }
-    read -r steps newton krylov < <(awk -F, 'NR>1 {s++; n+=$4; k+=$5} END {print s, n, k}' $out/time-series.csv)
+    unknowns=$(log_unknowns)
+    total=$(log_total)
+    read -r steps newton krylov < <(series_counts $out)
     dev() { echo "$log" | sed -n "s/^$1.csv: largest deviation.*: \(.*\)/\1/p"; }
     awk -v c="$n^2" -v np=$np -v u=$unknowns -v s=$steps -v nw=$newton -v k=$krylov \
-        -v T=$total -v a="$(section 'flow assembly')" -v r="$(section 'flow residual')" \
-        -v p="$(section 'flow preconditioner setup')" -v so="$(section 'flow linear solve')" \
+        -v T=$total -v a="$(log_section 'flow assembly')" -v r="$(log_section 'flow residual')" \
+        -v p="$(log_section 'flow preconditioner setup')" -v so="$(log_section 'flow linear solve')" \
         -v du="$(dev centerline-u)" -v dv="$(dev centerline-v)" 'BEGIN {
       printf "%-8s %-5s %-8s %-6s %-6s %-10.1f %-9.3f %-9.3f %-9.3f %-9.3f %-9.4f %-8.4f\n",
         c, np, u, s, nw, k/nw, T/nw, (a+r)/nw, p/nw, so/nw, du, dv }'

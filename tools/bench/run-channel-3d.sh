@@ -7,6 +7,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 source tools/mpi-env.sh
+source tools/bench/log-fields.sh
 n=${1:-16}
 VELOCITY=${VELOCITY:-spline-multigrid}
 RANKS=${RANKS:-1 2}
@@ -31,14 +32,13 @@ subsection Navier-Stokes
 end
 EOP
 )
-  unknowns=$(echo "$log" | sed -n 's/.* \([0-9]*\) unknowns.*/\1/p' | head -1)
-  total=$(echo "$log" | sed -n 's/^| Total wallclock time elapsed since start *| *\([0-9.e+-]*\)s.*/\1/p')
-  section() { echo "$log" | sed -n "s/^| $1 *| *[0-9]* | *\([0-9.e+-]*\)s.*/\1/p" | head -1; }
-  read -r steps newton krylov < <(awk -F, 'NR>1 {s++; n+=$4; k+=$5} END {print s, n, k}' $out/time-series.csv)
-  peak=$(echo "$log" | sed -n 's/^peak memory (VmHWM) per rank: max \([0-9.]*\) MB.*/\1/p')
+  unknowns=$(log_unknowns)
+  total=$(log_total)
+  read -r steps newton krylov < <(series_counts $out)
+  peak=$(log_peak_mb)
   awk -v c="$n^3" -v np=$np -v u=$unknowns -v s=$steps -v nw=$newton -v k=$krylov \
-      -v T=$total -v a="$(section 'flow assembly')" -v r="$(section 'flow residual')" \
-      -v p="$(section 'flow preconditioner setup')" -v so="$(section 'flow linear solve')" \
+      -v T=$total -v a="$(log_section 'flow assembly')" -v r="$(log_section 'flow residual')" \
+      -v p="$(log_section 'flow preconditioner setup')" -v so="$(log_section 'flow linear solve')" \
       -v m=$peak 'BEGIN {
     printf "%-6s %-5s %-8s %-6s %-6s %-10.1f %-8.2f %-10.2f %-10.2f %-9.2f %-9.2f %-8.0f\n",
       c, np, u, s, nw, k/nw, T/s, T/nw, (a+r)/nw, p/nw, so/nw, m }'
