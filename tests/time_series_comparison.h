@@ -72,3 +72,29 @@ report_restart_equivalence(std::ostream      &out,
   out << "\nlargest relative difference over all rows: "
       << (diff < 1e-9 ? "below 1e-9" : std::to_string(diff)) << '\n';
 }
+
+
+/// The restart check of both restart tests: @p common (a study's
+/// parameters with its time-stepping subsection left open) run for 8 steps
+/// into straight/, for 4 steps into restarted/ and then restarted from
+/// restarted/checkpoint.h5 to step 8; prints the exit codes and the
+/// comparison of the two time series. @p close ends the open subsections.
+inline void
+check_restart_equivalence(std::ostream      &out,
+                          const std::string &common,
+                          const std::string &close)
+{
+  const auto run = [&](const std::string &steps, const std::string &dir) {
+    return run_study_quietly(common + steps + close
+                             + "set Output directory = " + dir + "\n");
+  };
+  const int a = run("set Max steps = 8\n", "straight");
+  const int b = run("set Max steps = 4\n", "restarted");
+  const int c
+    = run("set Max steps = 8\nset Restart from = restarted/checkpoint.h5\n",
+          "restarted");
+  out << "exit codes " << a << ' ' << b << ' ' << c << '\n';
+  report_restart_equivalence(out,
+                             "straight/time-series.csv",
+                             "restarted/time-series.csv");
+}
