@@ -1,6 +1,7 @@
-// Shared by the restart tests: compare the time-series.csv of a run made
-// at once with that of the same run stopped and restarted from its
-// checkpoint.
+// Shared by the tests that run whole studies: run vesicle-iga on a
+// parameter text, read a time-series.csv, and (restart tests) compare the
+// time series of a run made at once with that of the same run stopped and
+// restarted from its checkpoint.
 #pragma once
 
 #include <deal.II/base/mpi.h>
@@ -17,10 +18,27 @@
 #include <string>
 #include <vector>
 
+struct StudyRun
+{
+  int         exit_code;
+  std::string log; ///< what the program printed (rank 0)
+
+  /// The first printed line that starts with @p start, or "".
+  std::string
+  line_starting_with(const std::string &start) const
+  {
+    std::istringstream lines(log);
+    for (std::string line; std::getline(lines, line);)
+      if (line.rfind(start, 0) == 0)
+        return line;
+    return "";
+  }
+};
+
 /// Run vesicle-iga on the parameter text @p prm (written to case.prm by
-/// rank 0), its terminal output discarded; returns the exit code.
-inline int
-run_study_quietly(const std::string &prm)
+/// rank 0) and capture what it prints.
+inline StudyRun
+run_study(const std::string &prm)
 {
   if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
     std::ofstream("case.prm") << prm;
@@ -29,21 +47,53 @@ run_study_quietly(const std::string &prm)
   auto              *old  = std::cout.rdbuf(captured.rdbuf());
   const int          code = vesicle_iga::run_program({"case.prm"});
   std::cout.rdbuf(old);
-  return code;
+  return {code, captured.str()};
+}
+
+/// As run_study, its terminal output discarded; returns the exit code.
+inline int
+run_study_quietly(const std::string &prm)
+{
+  return run_study(prm).exit_code;
+}
+
+
+/// A time-series.csv with its column names.
+struct NamedTimeSeries
+{
+  std::vector<std::string>         columns;
+  std::vector<std::vector<double>> rows;
+
+  /// Column @p name of row @p i (the last row by default); NaN if absent.
+  double
+  value(const std::string &name, const int i = -1) const
+  {
+    for (unsigned int j = 0; j < columns.size(); ++j)
+      if (columns[j] == name && !rows.empty())
+        return rows[i < 0 ? rows.size() - 1 : i][j];
+    return std::nan("");
+  }
+};
+
+inline NamedTimeSeries
+read_named_time_series(const std::string &name)
+{
+  std::ifstream   f(name);
+  std::string     line;
+  NamedTimeSeries s;
+  std::getline(f, line);
+  s.columns = dealii::Utilities::split_string_list(line, ',');
+  while (std::getline(f, line))
+    s.rows.push_back(dealii::Utilities::string_to_double(
+      dealii::Utilities::split_string_list(line, ',')));
+  return s;
 }
 
 
 inline std::vector<std::vector<double>>
 read_time_series(const std::string &name)
 {
-  std::ifstream                    f(name);
-  std::string                      line;
-  std::vector<std::vector<double>> rows;
-  std::getline(f, line); // header
-  while (std::getline(f, line))
-    rows.push_back(dealii::Utilities::string_to_double(
-      dealii::Utilities::split_string_list(line, ',')));
-  return rows;
+  return read_named_time_series(name).rows;
 }
 
 /// Prints the row counts, both final rows and the largest relative

@@ -198,21 +198,54 @@ namespace vesicle_iga
                              const double,
                              std::vector<double> &)> &integrand) const
   {
+    return integrate(&ghosted_phi,
+                     nullptr,
+                     quadrature_1d,
+                     n_sums,
+                     [&](const PhaseFieldPoint<dim> &p,
+                         const PhaseFieldPoint<dim> &,
+                         const double         JxW,
+                         std::vector<double> &sums) {
+                       integrand(p, JxW, sums);
+                     });
+  }
+
+
+  template <int dim>
+  std::vector<double>
+  PhaseFieldOperator<dim>::integrate(
+    const TrilinosWrappers::MPI::Vector              *ghosted_phi_and_psi,
+    const TrilinosWrappers::MPI::Vector              *ghosted_other,
+    const Quadrature<1>                              &quadrature_1d,
+    const unsigned int                                n_sums,
+    const std::function<void(const PhaseFieldPoint<dim> &,
+                             const PhaseFieldPoint<dim> &,
+                             const double,
+                             std::vector<double> &)> &integrand) const
+  {
     SplineCellValues<dim> values(
       dofs.get_space(), nullptr, quadrature_1d, derivative_order(), false);
     std::vector<double>               sums(n_sums, 0.);
-    std::vector<std::vector<double>>  c, cp(1);
-    std::vector<PhaseFieldPoint<dim>> points;
+    std::vector<std::vector<double>>  c, cp(1), co(1);
+    std::vector<PhaseFieldPoint<dim>> points, other(1);
     for (const unsigned int e : dofs.get_mesh().locally_owned_elements())
       {
         values.reinit(e);
         const SumFactorization<dim> kernel(values.tensor_product_factors());
-        get_element_coefficients(dofs, ghosted_phi, e, c);
+        get_element_coefficients(dofs, *ghosted_phi_and_psi, e, c);
         if (psi)
           get_element_coefficients(dofs, *psi, e, cp);
         evaluate_points(kernel, c[0], cp[0], points);
+        if (ghosted_other)
+          {
+            get_element_coefficients(dofs, *ghosted_other, e, co);
+            evaluate_points(kernel, co[0], {}, other);
+          }
         for (unsigned int q = 0; q < points.size(); ++q)
-          integrand(points[q], kernel.JxW(q), sums);
+          integrand(points[q],
+                    other[ghosted_other ? q : 0],
+                    kernel.JxW(q),
+                    sums);
       }
     Utilities::MPI::sum(sums, dofs.get_mesh().get_communicator(), sums);
     return sums;

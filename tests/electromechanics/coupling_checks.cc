@@ -22,46 +22,11 @@
 //     printed by the study, small against the ALM tolerance 1e-4). (With
 //     psi updated the total may move either way; see doc/electromechanics.md.)
 
-#include <deal.II/base/mpi.h>
-#include <deal.II/base/utilities.h>
-
-#include <vesicle_iga/app/program.h>
-
-#include <cmath>
-#include <fstream>
-#include <iostream>
-#include <map>
-#include <sstream>
+#include "../time_series_comparison.h"
 
 using namespace dealii;
 
-struct TimeSeries
-{
-  std::vector<std::string>         columns;
-  std::vector<std::vector<double>> rows;
-  double
-  last(const std::string &name) const
-  {
-    for (unsigned int j = 0; j < columns.size(); ++j)
-      if (columns[j] == name)
-        return rows.back()[j];
-    return std::nan("");
-  }
-};
-
-TimeSeries
-read_csv(const std::string &name)
-{
-  std::ifstream f(name);
-  std::string   line;
-  TimeSeries    s;
-  std::getline(f, line);
-  s.columns = Utilities::split_string_list(line, ',');
-  while (std::getline(f, line))
-    s.rows.push_back(
-      Utilities::string_to_double(Utilities::split_string_list(line, ',')));
-  return s;
-}
+using TimeSeries = NamedTimeSeries;
 
 // Largest relative difference of the columns both series have.
 double
@@ -95,22 +60,15 @@ main(int argc, char *argv[])
       "subsection Mesh\nset Lower corner = -12, -8\n"
       "set Upper corner = 12, 8\nset Elements = 48, 32\nend\n";
   const auto run = [&](const std::string &dir, const std::string &text) {
-    if (root)
-      std::ofstream("case.prm")
-        << common << text << "end\nset Output directory = " << dir << "\n";
-    MPI_Barrier(MPI_COMM_WORLD);
-    std::ostringstream captured;
-    auto              *old  = std::cout.rdbuf(captured.rdbuf());
-    const int          code = vesicle_iga::run_program({"case.prm"});
-    std::cout.rdbuf(old);
-    double             increase = 1e300;
-    std::istringstream lines(captured.str());
-    for (std::string line; std::getline(lines, line);)
-      if (line.find("largest relative increase") == 0)
-        increase = std::stod(line.substr(line.find("energy ") + 7));
-    if (code != 0)
-      out << dir << ": exit code " << code << '\n';
-    return std::make_pair(read_csv(dir + "/time-series.csv"), increase);
+    const StudyRun r
+      = run_study(common + text + "end\nset Output directory = " + dir + "\n");
+    const std::string line = r.line_starting_with("largest relative increase");
+    const double      increase
+      = line.empty() ? 1e300 : std::stod(line.substr(line.find("energy ") + 7));
+    if (r.exit_code != 0)
+      out << dir << ": exit code " << r.exit_code << '\n';
+    return std::make_pair(read_named_time_series(dir + "/time-series.csv"),
+                          increase);
   };
   const std::string field = "subsection Electric field\n"
                             "set Field strength = 5e4\n";
@@ -137,23 +95,23 @@ main(int argc, char *argv[])
                                    "set Coupling = fixed-point\nend\n");
   for (const auto *c : {&staggered, &fixed_point})
     out << "2. " << (c == &staggered ? "staggered:  " : "fixed-point:")
-        << " steps " << c->first.rows.size() << ", t = " << c->first.last("t")
-        << ", extent_x = " << c->first.last("extent_x")
-        << ", extent_y = " << c->first.last("extent_y")
-        << ", E_B/kappa = " << c->first.last("bending_energy") << '\n';
-  const double dx = std::abs(staggered.first.last("extent_x")
-                             - fixed_point.first.last("extent_x")),
-               dy = std::abs(staggered.first.last("extent_y")
-                             - fixed_point.first.last("extent_y"));
+        << " steps " << c->first.rows.size() << ", t = " << c->first.value("t")
+        << ", extent_x = " << c->first.value("extent_x")
+        << ", extent_y = " << c->first.value("extent_y")
+        << ", E_B/kappa = " << c->first.value("bending_energy") << '\n';
+  const double dx = std::abs(staggered.first.value("extent_x")
+                             - fixed_point.first.value("extent_x")),
+               dy = std::abs(staggered.first.value("extent_y")
+                             - fixed_point.first.value("extent_y"));
   out << "2. extents at t = 30 agree within 0.01 h = 0.005: "
       << (dx < 5e-3 && dy < 5e-3 ? "yes" : "NO") << '\n';
   out << "2. shape change by the field (extent_y below its initial 8): "
-      << (staggered.first.last("extent_y") < 8 - 0.05 ? "yes" : "NO") << '\n';
+      << (staggered.first.value("extent_y") < 8 - 0.05 ? "yes" : "NO") << '\n';
 
   const auto flexo
     = run("flexoelectric", "set Max steps = 40\n" + field + "end\n");
-  const double m0 = std::abs(staggered.first.last("field_axis_midpoint"));
-  const double m1 = std::abs(flexo.first.last("field_axis_midpoint"));
+  const double m0 = std::abs(staggered.first.value("field_axis_midpoint"));
+  const double m1 = std::abs(flexo.first.value("field_axis_midpoint"));
   out << "3. |midpoint on the field axis| without flexoelectricity below "
          "1e-4 h: "
       << (m0 < 5e-5 ? "yes" : "NO")

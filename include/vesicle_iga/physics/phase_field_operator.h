@@ -90,6 +90,20 @@ namespace vesicle_iga
                                const double,
                                std::vector<double> &)> &integrand) const;
 
+    /// As above with the points of a second field (no potential) at the
+    /// same quadrature points, e.g. a state and its change over a step:
+    /// integrand(point of phi, point of other, JxW, sums).
+    std::vector<double>
+    integrate(
+      const TrilinosWrappers::MPI::Vector              *ghosted_phi,
+      const TrilinosWrappers::MPI::Vector              *ghosted_other,
+      const Quadrature<1>                              &quadrature_1d,
+      const unsigned int                                n_sums,
+      const std::function<void(const PhaseFieldPoint<dim> &,
+                               const PhaseFieldPoint<dim> &,
+                               const double,
+                               std::vector<double> &)> &integrand) const;
+
     /// The functional of every term (energies, A, V), integrated at once.
     std::vector<double>
     integrate_terms(const std::vector<const PhaseFieldTerm<dim> *> &terms,

@@ -1,0 +1,63 @@
+#!/usr/bin/env bash
+# Cost of the 3D electromechanics step of tools/bench/electromechanics-3d.prm
+# (spec set-up, every energy on) on 40^3 and 60^3 elements and 1 and 2
+# ranks: the iteration counts (Newton, GMRES, ALM, CG of the potential), the
+# set-up (mesh, spline space, sparsity: wall time outside the timed
+# sections), and per step the potential solve (assembly + multigrid + CG,
+# per solve; a run of N steps solves N + 1 times), the phase-field
+# assembly, the multigrid set-up and the GMRES solves (the ALM Jacobian's
+# assembly and solves included), with the time per Newton iteration and the
+# peak memory per rank. Times in seconds. Usage (after tools/build.sh):
+#   tools/bench/run-electromechanics-3d.sh [element counts, default "40 60"]
+# Environment: RANKS (default "1 2"); STEPS (default 1: the first step);
+# EXTRA (parameter lines added to the file, e.g. another smoother) and TAG
+# (appended to the output directory names);
+# REPORT_ONLY=1 prints the table from the logs of an earlier run.
+set -euo pipefail
+cd "$(dirname "$0")/../.."
+source tools/mpi-env.sh
+source tools/bench/log-fields.sh
+sizes=${*:-40 60}
+RANKS=${RANKS:-1 2}
+STEPS=${STEPS:-1}
+EXTRA=${EXTRA:-}
+echo "3D electromechanics (all energies, 50 kV/m), $STEPS step(s) of dt = 0.01; times in s"
+printf "%-6s %-5s %-8s %-6s %-6s %-4s %-4s %-7s %-10s %-9s %-9s %-9s %-9s %-9s %-7s\n" \
+  cells ranks unknowns newton gmres alm cg set-up potential/sol assembly mg-setup gmres s/step s/newton peakMB
+for n in $sizes; do
+  for np in $RANKS; do
+    out=output/bench-electromechanics-3d-$n-$np${TAG:-}
+    if [[ "${REPORT_ONLY:-0}" != 1 ]]; then
+      mkdir -p $out
+      mpirun -np $np build/vesicle-iga - > $out.log <<EOP
+$(cat tools/bench/electromechanics-3d.prm)
+set Output directory = $out
+subsection Willmore flow
+  set Max steps = $STEPS
+  set Epsilon over h = $(awk -v n=$n 'BEGIN {print n / 30}')
+  subsection Mesh
+    set Elements = $n
+  end
+end
+$EXTRA
+EOP
+      mv $out.log $out/run.log
+    fi
+    log=$(cat $out/run.log)
+    read -r steps newton krylov < <(series_counts $out)
+    read -r alm cg < <(awk -F, 'NR==1 {for (i = 1; i <= NF; ++i) c[$i] = i}
+      NR>1 {a += $c["alm_iterations"]; p += $c["potential_iterations"]}
+      END {print a, p}' $out/time-series.csv)
+    # 'ALM Jacobian' holds assembly and solves of its own: not added again.
+    awk -v c="$n^3" -v np=$np -v u=$(log_unknowns) -v s=$steps -v nw=$newton \
+        -v k=$krylov -v al=$alm -v cg=$cg -v T=$(log_total) \
+        -v ps="$(log_section potential)" -v a="$(log_section assembly)" \
+        -v p="$(log_section preconditioner)" -v so="$(log_section solve)" \
+        -v mo="$(log_section monitor)" -v o="$(log_section output)" \
+        -v m=$(log_peak_mb) 'BEGIN {
+      step = (ps * s / (s + 1) + a + p + so + mo) / s
+      printf "%-6s %-5s %-8s %-6s %-6s %-4s %-4s %-7.1f %-10.2f %-9.2f %-9.2f %-9.2f %-9.1f %-9.2f %-7.0f\n",
+        c, np, u, nw, k, al, cg, T - (ps + a + p + so + mo + o), ps / (s + 1),
+        a / s, p / s, so / s, step, step * s / nw, m }'
+  done
+done
