@@ -1,4 +1,5 @@
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/utilities.h>
 
 #include <vesicle_iga/io/time_series.h>
 
@@ -14,24 +15,47 @@ namespace vesicle_iga
   {
     if (dealii::Utilities::MPI::this_mpi_process(communicator) != 0)
       return;
+    // On restart the rows up to the restart step are kept. A file written
+    // by a version with other columns (e.g. before a column was added) is
+    // rewritten in the new columns, matched by name; a column the old file
+    // lacks is "nan" in its rows.
     std::vector<std::string> kept;
     if (restart_step >= 0)
       {
-        std::ifstream old(filename);
-        std::string   line;
+        std::ifstream            old(filename);
+        std::string              line;
+        std::vector<std::string> old_names;
+        if (std::getline(old, line))
+          old_names = dealii::Utilities::split_string_list(line, ',');
+        std::vector<int> source(names.size(), -1);
+        for (unsigned int i = 0; i < names.size(); ++i)
+          for (unsigned int j = 0; j < old_names.size(); ++j)
+            if (old_names[j] == names[i])
+              source[i] = j;
         while (std::getline(old, line))
-          if (kept.empty()
-              || std::stol(line.substr(0, line.find(','))) <= restart_step)
-            kept.push_back(line);
+          if (std::stol(line.substr(0, line.find(','))) <= restart_step)
+            {
+              if (old_names == names)
+                {
+                  kept.push_back(line);
+                  continue;
+                }
+              const auto fields
+                = dealii::Utilities::split_string_list(line, ',');
+              std::string row;
+              for (unsigned int i = 0; i < names.size(); ++i)
+                row += (i ? "," : "")
+                       + (source[i] >= 0 && source[i] < int(fields.size()) ?
+                            fields[source[i]] :
+                            std::string("nan"));
+              kept.push_back(row);
+            }
       }
     file.open(filename);
     AssertThrow(file, dealii::ExcMessage("Cannot write " + filename));
-    if (kept.empty())
-      {
-        for (unsigned int i = 0; i < names.size(); ++i)
-          file << (i ? "," : "") << names[i];
-        file << '\n';
-      }
+    for (unsigned int i = 0; i < names.size(); ++i)
+      file << (i ? "," : "") << names[i];
+    file << '\n';
     for (const auto &line : kept)
       file << line << '\n';
     file << std::setprecision(12) << std::flush;

@@ -13,7 +13,10 @@ namespace vesicle_iga
    * studies): a header naming the columns, then one row per accepted step
    * whose first column is the integer step number. Every row is flushed at
    * once, so a run that is killed keeps every row written so far. On a
-   * restart from step n the rows up to n are kept and the file continues.
+   * restart from step n the rows up to n are kept and the file continues;
+   * if the file has other columns (written by another version), its rows
+   * are rewritten in the new columns, matched by name, "nan" where the old
+   * file had no such column.
    */
   class TimeSeriesWriter
   {
