@@ -453,9 +453,12 @@ namespace vesicle_iga
             M[i][j] = sums[1 + dim + dim * i + j];
         }
       InterfaceMotion motion;
-      motion.drift                  = -(invert(M) * b);
-      const double gradient_norm_sq = trace(M);
-      const double shape_change_sq  = std::max(0., sums[0] + motion.drift * b);
+      const double    gradient_norm_sq = trace(M);
+      // No interface left in the box (phi constant): nothing moves.
+      if (!(determinant(M) > 1e-12 * std::pow(gradient_norm_sq, dim)))
+        return motion;
+      motion.drift                 = -(invert(M) * b);
+      const double shape_change_sq = std::max(0., sums[0] + motion.drift * b);
       motion.speed = std::sqrt(shape_change_sq / gradient_norm_sq);
       return motion;
     }
