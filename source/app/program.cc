@@ -49,6 +49,9 @@ namespace vesicle_iga
     const char *usage
       = "Usage: vesicle-iga FILE.prm     run the study described in FILE.prm\n"
         "       vesicle-iga -            read the parameter file from stdin\n"
+        "       vesicle-iga --check FILE.prm\n"
+        "                                only read FILE.prm and report whether\n"
+        "                                every name and value is valid\n"
         "       vesicle-iga --print-parameters\n"
         "                                print every parameter with its "
         "default,\n"
@@ -82,7 +85,9 @@ namespace vesicle_iga
       {
         ParameterHandler prm;
         declare_parameters(prm);
-        if (args.size() != 1 || args[0] == "--help" || args[0] == "-h")
+        const bool check_only = args.size() == 2 && args[0] == "--check";
+        if ((args.size() != 1 && !check_only) || args[0] == "--help"
+            || args[0] == "-h")
           {
             pcout << usage << "\nStudies:\n";
             for (const auto &s : available_studies())
@@ -97,7 +102,7 @@ namespace vesicle_iga
           }
 
         // Read the file on rank 0 (stdin exists only there) and share it.
-        std::string text, name = args[0];
+        std::string text, name = args.back();
         if (root)
           {
             std::stringstream buffer;
@@ -123,7 +128,20 @@ namespace vesicle_iga
                     name,
                     "the path of a readable .prm file (or - for standard "
                     "input)");
-        prm.parse_input_from_string(text, name);
+        // As a stream, so that a message names the file (the second
+        // argument of parse_input_from_string is a terminating line).
+        std::istringstream stream(text);
+        prm.parse_input(stream, name);
+        if (check_only)
+          {
+            // Names and values are checked by the parser; what depends on
+            // several parameters (the vesicle fits the box, ...) is checked
+            // when the study is set up.
+            pcout << name << ": valid parameters for study "
+                  << prm.get("Study") << ", dimension "
+                  << prm.get("Dimension") << std::endl;
+            return 0;
+          }
 
         RunContext context{comm,
                            static_cast<unsigned int>(
