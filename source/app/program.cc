@@ -137,9 +137,8 @@ namespace vesicle_iga
             // Names and values are checked by the parser; what depends on
             // several parameters (the vesicle fits the box, ...) is checked
             // when the study is set up.
-            pcout << name << ": valid parameters for study "
-                  << prm.get("Study") << ", dimension "
-                  << prm.get("Dimension") << std::endl;
+            pcout << name << ": valid parameters for study " << prm.get("Study")
+                  << ", dimension " << prm.get("Dimension") << std::endl;
             return 0;
           }
 

@@ -39,7 +39,7 @@ main(int argc, char *argv[])
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   std::ofstream                            out("output");
-  const std::filesystem::path              here = std::filesystem::current_path();
+  const std::filesystem::path here = std::filesystem::current_path();
 
   // Paths relative to the source tree, so that the output does not depend
   // on where it is.
