@@ -214,7 +214,7 @@ namespace vesicle_iga
   template <int dim>
   std::vector<double>
   PhaseFieldOperator<dim>::integrate(
-    const TrilinosWrappers::MPI::Vector              *ghosted_phi_and_psi,
+    const TrilinosWrappers::MPI::Vector              *ghosted_phi,
     const TrilinosWrappers::MPI::Vector              *ghosted_other,
     const Quadrature<1>                              &quadrature_1d,
     const unsigned int                                n_sums,
@@ -232,7 +232,7 @@ namespace vesicle_iga
       {
         values.reinit(e);
         const SumFactorization<dim> kernel(values.tensor_product_factors());
-        get_element_coefficients(dofs, *ghosted_phi_and_psi, e, c);
+        get_element_coefficients(dofs, *ghosted_phi, e, c);
         if (psi)
           get_element_coefficients(dofs, *psi, e, cp);
         evaluate_points(kernel, c[0], cp[0], points);
