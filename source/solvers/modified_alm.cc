@@ -87,4 +87,28 @@ namespace vesicle_iga
       }
     return {false, max_iterations, v, a};
   }
+
+
+  void
+  ModifiedALM::save(Checkpoint &c, const std::string &prefix) const
+  {
+    c.scalars[prefix + ".volume_target"] = V0;
+    c.scalars[prefix + ".area_target"]   = A0;
+    c.scalars[prefix + ".alpha"]         = al;
+    c.scalars[prefix + ".beta"]          = be;
+    for (unsigned int k = 0; k < 4; ++k)
+      c.scalars[prefix + ".inverse_jacobian_" + std::to_string(k)] = Tinv[k];
+  }
+
+
+  void
+  ModifiedALM::load(const Checkpoint &c, const std::string &prefix)
+  {
+    V0 = c.scalar(prefix + ".volume_target");
+    A0 = c.scalar(prefix + ".area_target");
+    al = c.scalar(prefix + ".alpha");
+    be = c.scalar(prefix + ".beta");
+    for (unsigned int k = 0; k < 4; ++k)
+      Tinv[k] = c.scalar(prefix + ".inverse_jacobian_" + std::to_string(k));
+  }
 } // namespace vesicle_iga

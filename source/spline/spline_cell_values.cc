@@ -164,9 +164,13 @@ namespace vesicle_iga
                 N[d][(r * nq[d] + q) * np[d] + j] = s * scale;
               }
         univariate.weights[d].resize(nq[d]);
+        univariate.points[d].resize(nq[d]);
         for (unsigned int q = 0; q < nq[d]; ++q)
-          univariate.weights[d][q]
-            = (*wts[d])[q] * (int(d) == face / 2 && face >= 0 ? 1. : h[d]);
+          {
+            univariate.weights[d][q]
+              = (*wts[d])[q] * (int(d) == face / 2 && face >= 0 ? 1. : h[d]);
+            univariate.points[d][q] = lower[d] + h[d] * tab[d]->points[q];
+          }
       }
     if (!shape_tables)
       {

@@ -311,23 +311,21 @@ namespace vesicle_iga
       if (!restart_file.empty())
         {
           const Checkpoint c = Checkpoint::read(restart_file,
-                                                context.communicator,
-                                                {"solution", "rate"},
-                                                {"t", "dt", "step", "n_basis"});
-          check_input(c.scalars.at("n_basis") == space.n_basis(),
+                                                context.communicator);
+          check_input(c.scalar("n_basis") == space.n_basis(),
                       prefix + "Time stepping/Restart from",
                       restart_file,
                       "a checkpoint of the same mesh and degree (it has "
-                        + std::to_string(int(c.scalars.at("n_basis")))
+                        + std::to_string(int(c.scalar("n_basis")))
                         + " basis functions, this run "
                         + std::to_string(space.n_basis()) + ")");
           TrilinosWrappers::MPI::Vector solution(solver.owned_solution()),
             rate(solver.owned_rate());
-          scatter_natural(solver.dofs(), c.vectors.at("solution"), solution);
-          scatter_natural(solver.dofs(), c.vectors.at("rate"), rate);
-          solver.set_state(solution, rate, c.scalars.at("t"));
-          dt   = c.scalars.at("dt");
-          step = static_cast<unsigned int>(c.scalars.at("step"));
+          scatter_natural(solver.dofs(), c.vector("solution"), solution);
+          scatter_natural(solver.dofs(), c.vector("rate"), rate);
+          solver.set_state(solution, rate, c.scalar("t"));
+          dt   = c.scalar("dt");
+          step = static_cast<unsigned int>(c.scalar("step"));
           context.pcout << "restart from " << restart_file << ": step " << step
                         << ", t = " << solver.time() << ", dt = " << dt
                         << std::endl;

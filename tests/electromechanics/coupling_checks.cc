@@ -74,9 +74,9 @@ main(int argc, char *argv[])
                             "set Field strength = 5e4\n";
 
   // 1.
-  const auto plain = run("plain", "set Max steps = 12\n");
+  const auto plain = run("plain", "subsection Time stepping\nset Max steps = 12\nend\n");
   const auto off   = run("terms-off",
-                       "set Max steps = 12\n" + field
+                       "subsection Time stepping\nset Max steps = 12\nend\n" + field
                          + "set Flexoelectric energy = false\n"
                              "set Membrane dielectric energy = false\n"
                              "set Electrolyte dielectric energy = false\nend\n");
@@ -87,10 +87,10 @@ main(int argc, char *argv[])
 
   // 2. and 3. (flexoelectricity off), to t = 30 (stationary, see above).
   const auto staggered   = run("staggered",
-                             "set End time = 30\n" + field
+                             "subsection Time stepping\nset End time = 30\nend\n" + field
                                + "set Flexoelectric energy = false\nend\n");
   const auto fixed_point = run("fixed-point",
-                               "set End time = 30\n" + field
+                               "subsection Time stepping\nset End time = 30\nend\n" + field
                                  + "set Flexoelectric energy = false\n"
                                    "set Coupling = fixed-point\nend\n");
   for (const auto *c : {&staggered, &fixed_point})
@@ -109,7 +109,7 @@ main(int argc, char *argv[])
       << (staggered.first.value("extent_y") < 8 - 0.05 ? "yes" : "NO") << '\n';
 
   const auto flexo
-    = run("flexoelectric", "set Max steps = 40\n" + field + "end\n");
+    = run("flexoelectric", "subsection Time stepping\nset Max steps = 40\nend\n" + field + "end\n");
   const double m0 = std::abs(staggered.first.value("field_axis_midpoint"));
   const double m1 = std::abs(flexo.first.value("field_axis_midpoint"));
   out << "3. |midpoint on the field axis| without flexoelectricity below "

@@ -58,9 +58,9 @@ main(int argc, char *argv[])
                   + dir
                   + "\n"
                     "subsection Willmore flow\n"
-                    "  set VTU interval = 0\n"
-                    "  set Checkpoint interval = 0\n"
-                    "  subsection Time step\n"
+                    "  subsection Time stepping\n"
+                    "    set VTU interval = 0\n"
+                    "    set Checkpoint interval = 0\n"
                     "    set Max dt = 4\n"
                     "  end\n"
                     "  subsection Mesh\n"

@@ -41,17 +41,19 @@
 
 #include <vesicle_iga/parallel/natural_numbering.h>
 #include <vesicle_iga/parallel/patch_mesh.h>
-#include <vesicle_iga/physics/bending_energy.h>
-#include <vesicle_iga/physics/electric_energies.h>
-#include <vesicle_iga/physics/electric_potential.h>
-#include <vesicle_iga/physics/phase_field_operator.h>
+#include <vesicle_iga/kernel/system_assembler.h>
+#include <vesicle_iga/models/electric_potential.h>
 #include <vesicle_iga/physics/vesicle_shape.h>
+#include <vesicle_iga/terms/bending_energy.h>
+#include <vesicle_iga/terms/dielectric_energies.h>
+#include <vesicle_iga/terms/flexoelectric_energy.h>
 
 #include <cmath>
 #include <fstream>
 #include <iomanip>
 
 using namespace vesicle_iga;
+using namespace dealii;
 
 std::ofstream out;
 
@@ -92,20 +94,37 @@ forces(const double h,
   const QGauss<1>      quadrature(6);
   ElectricPotential<2> potential(dofs, material, quadrature, solver, timer);
 
-  const BendingEnergy<2>            bending(1., eps, 0.);
-  const FlexoelectricEnergy<2>      flexo(material.flexoelectric_coefficient(),
-                                     material.membrane_thickness(),
-                                     eps);
-  const MembraneDielectricEnergy<2> membrane(
-    material.membrane_thickness(), material.permittivity(material.e_m), eps);
-  const ElectrolyteDielectricEnergy<2> electrolyte(
+  BendingEnergy<2>            bending(0, 1., eps, 0.);
+  FlexoelectricEnergy<2>      flexo(0,
+                               0,
+                               material.flexoelectric_coefficient(),
+                               material.membrane_thickness(),
+                               eps);
+  MembraneDielectricEnergy<2> membrane(0,
+                                       0,
+                                       material.membrane_thickness(),
+                                       material.permittivity(material.e_m),
+                                       eps);
+  ElectrolyteDielectricEnergy<2> electrolyte(
+    0,
+    0,
     material.permittivity(material.e_in),
     material.permittivity(material.e_out));
-  const std::vector<const PhaseFieldTerm<2> *> terms{&bending,
-                                                     &flexo,
-                                                     &membrane,
-                                                     &electrolyte};
-  PhaseFieldOperator<2>                        op(dofs, terms);
+  const std::vector<Integrand<2> *> terms{&bending,
+                                          &flexo,
+                                          &membrane,
+                                          &electrolyte};
+  SystemAssembler<2>                assembler(dofs, quadrature);
+  assembler.add_auxiliary_field(dofs); // psi
+  // E of the integrands at phi with the potential psi.
+  const auto energies = [&](const std::vector<Integrand<2> *>    &list,
+                            const TrilinosWrappers::MPI::Vector &phi,
+                            const TrilinosWrappers::MPI::Vector &psi) {
+    AssemblyState state;
+    state.value     = &phi;
+    state.auxiliary = {&psi};
+    return assembler.integrate(list, state);
+  };
 
   const auto phase_field = [&](const double d) {
     VesicleShape<2> ellipse;
@@ -125,9 +144,8 @@ forces(const double h,
 
   potential.solve(phi_0);
   const TrilinosWrappers::MPI::Vector psi_0 = potential.potential();
-  op.set_potential(&psi_0);
-  const auto e_plus  = op.integrate_terms(terms, phi_plus, quadrature);
-  const auto e_minus = op.integrate_terms(terms, phi_minus, quadrature);
+  const auto e_plus  = energies(terms, phi_plus, psi_0);
+  const auto e_minus = energies(terms, phi_minus, psi_0);
   Forces     f;
   for (unsigned int i = 0; i < 4; ++i)
     f.frozen[i] = (e_plus[i] - e_minus[i]) / (2 * shift);
@@ -136,23 +154,34 @@ forces(const double h,
   const TrilinosWrappers::MPI::Vector psi_plus = potential.potential();
   potential.solve(phi_minus);
   const TrilinosWrappers::MPI::Vector psi_minus = potential.potential();
-  op.set_potential(&psi_plus);
-  const double flexo_plus
-    = op.integrate_terms({&flexo}, phi_plus, quadrature)[0];
-  op.set_potential(&psi_minus);
-  const double flexo_minus
-    = op.integrate_terms({&flexo}, phi_minus, quadrature)[0];
+  const double flexo_plus  = energies({&flexo}, phi_plus, psi_plus)[0];
+  const double flexo_minus = energies({&flexo}, phi_minus, psi_minus)[0];
   f.flexo_consistent = (flexo_plus - flexo_minus) / (2 * shift);
 
-  f.translation_norm = op.integrate(phi_0,
-                                    quadrature,
-                                    1,
-                                    [](const PhaseFieldPoint<2> &p,
-                                       const double              JxW,
-                                       std::vector<double>      &sums) {
-                                      sums[0]
-                                        += p.grad_phi[1] * p.grad_phi[1] * JxW;
-                                    })[0];
+  // (d_y phi, d_y phi)
+  struct TranslationNorm : public Integrand<2>
+  {
+    InputHandle dy;
+    unsigned int
+    n_values() const override
+    {
+      return 1;
+    }
+    void
+    declare(TermDeclaration<2> &d) override
+    {
+      dy = d.value(0, Derivative<2>::gradient(1));
+    }
+    void
+    integrate(const QuadratureInputs<2> &in,
+              const double              *JxW,
+              double                    *sums) const override
+    {
+      for (unsigned int q = 0; q < in.size(); ++q)
+        sums[0] += in[dy][q] * in[dy][q] * JxW[q];
+    }
+  } translation;
+  f.translation_norm = energies({&translation}, phi_0, psi_0)[0];
   return f;
 }
 

@@ -25,7 +25,7 @@
 
 #include <vesicle_iga/parallel/natural_numbering.h>
 #include <vesicle_iga/parallel/patch_mesh.h>
-#include <vesicle_iga/physics/electric_potential.h>
+#include <vesicle_iga/models/electric_potential.h>
 #include <vesicle_iga/physics/vesicle_shape.h>
 
 #include <cmath>
@@ -33,6 +33,7 @@
 #include <iomanip>
 
 using namespace vesicle_iga;
+using namespace dealii;
 
 std::ofstream       out;
 std::vector<double> dipoles;

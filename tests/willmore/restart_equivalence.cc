@@ -28,11 +28,10 @@ main(int argc, char *argv[])
       "set Print details = false\n"
       "subsection Willmore flow\n"
       "set Semi-axes = 1\nset Center = 0,0\n"
-      "set End time = 10\n"
       "subsection Linear solver\nset Method = direct\nend\n"
       "subsection Mesh\nset Lower corner = -3.2\n"
       "set Upper corner = 3.2\nset Elements = 32\nend\n"
-      "subsection Time step\nset Initial dt = 1e-3\n"
-      "set Max dt = 0.05\nend\n";
-  check_restart_equivalence(out, common, "end\n");
+      "subsection Time stepping\nset End time = 10\n"
+      "set Initial dt = 1e-3\nset Max dt = 0.05\n";
+  check_restart_equivalence(out, common, "end\nend\n");
 }

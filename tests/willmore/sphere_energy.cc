@@ -16,15 +16,16 @@
 #include <vesicle_iga/parallel/natural_numbering.h>
 #include <vesicle_iga/parallel/patch_mesh.h>
 #include <vesicle_iga/parallel/spline_dof_handler.h>
-#include <vesicle_iga/physics/bending_energy.h>
-#include <vesicle_iga/physics/phase_field_operator.h>
+#include <vesicle_iga/kernel/system_assembler.h>
 #include <vesicle_iga/physics/vesicle_shape.h>
+#include <vesicle_iga/terms/bending_energy.h>
 
 #include <cmath>
 #include <fstream>
 #include <iomanip>
 
 using namespace vesicle_iga;
+using namespace dealii;
 
 double
 relative_error(const unsigned int n, const double epsilon)
@@ -46,9 +47,11 @@ relative_error(const unsigned int n, const double epsilon)
                                       MPI_COMM_WORLD);
   scatter_natural(dofs, c, owned);
   phi = owned;
-  const BendingEnergy<3> bending(1., epsilon, 0.);
-  PhaseFieldOperator<3>  op(dofs, {&bending});
-  const auto             E = op.integrate_terms({&bending}, phi, QGauss<1>(6));
+  BendingEnergy<3>           bending(0, 1., epsilon, 0.);
+  const SystemAssembler<3>   assembler(dofs, QGauss<1>(6));
+  AssemblyState              state;
+  state.value  = &phi;
+  const auto E = assembler.integrate({&bending}, state);
   return E[0] / (8 * M_PI) - 1;
 }
 

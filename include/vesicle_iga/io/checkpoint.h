@@ -11,9 +11,11 @@ namespace vesicle_iga
   /**
    * A checkpoint: named vectors (full, in the natural numbering of the
    * spline basis, so that a run can restart on any number of ranks) and
-   * named scalars, stored as an HDF5 file (datasets and attributes).
-   * Writing goes to "<file>.tmp" and is renamed when complete, so a run
-   * killed while writing still has its previous checkpoint.
+   * named scalars, stored as an HDF5 file (datasets and attributes, with an
+   * index of the names). Writing goes to "<file>.tmp" and is renamed when
+   * complete, so a run killed while writing still has its previous
+   * checkpoint. Names are "<prefix>.<name>": every stateful object saves
+   * and loads itself under its prefix (Checkpointable).
    */
   struct Checkpoint
   {
@@ -26,9 +28,31 @@ namespace vesicle_iga
     /// Collective; every rank gets everything. Throws InputError naming
     /// "Restart from" if the file cannot be read.
     static Checkpoint
-    read(const std::string              &filename,
-         const MPI_Comm                  comm,
-         const std::vector<std::string> &vector_names,
-         const std::vector<std::string> &scalar_names);
+    read(const std::string &filename, const MPI_Comm comm);
+
+    /// The entries; InputError naming "Restart from" and the entry if the
+    /// checkpoint lacks it (a checkpoint of another study or version).
+    const std::vector<double> &
+    vector(const std::string &name) const;
+    double
+    scalar(const std::string &name) const;
+
+    /// The file read (for messages).
+    std::string source;
+  };
+
+
+  /**
+   * An object whose state a restart needs: it writes and reads its own
+   * entries under a prefix, so that their names are listed in one place.
+   */
+  class Checkpointable
+  {
+  public:
+    virtual ~Checkpointable() = default;
+    virtual void
+    save(Checkpoint &checkpoint, const std::string &prefix) const = 0;
+    virtual void
+    load(const Checkpoint &checkpoint, const std::string &prefix) = 0;
   };
 } // namespace vesicle_iga

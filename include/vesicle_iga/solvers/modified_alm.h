@@ -1,7 +1,10 @@
 #pragma once
 
+#include <vesicle_iga/io/checkpoint.h>
+
 #include <array>
 #include <functional>
+#include <string>
 
 namespace vesicle_iga
 {
@@ -15,7 +18,7 @@ namespace vesicle_iga
    * (spec [R]): a near-singular secant matrix keeps the previous inverse;
    * after a maximum number of iterations the step counts as failed.
    */
-  class ModifiedALM
+  class ModifiedALM : public Checkpointable
   {
   public:
     /// Solves the time step with shifted targets alpha, beta; returns
@@ -48,6 +51,32 @@ namespace vesicle_iga
          const double            v_n,
          const double            a_n,
          const InverseRefresher &refresh = InverseRefresher());
+
+    /// New targets V0, A0 (alpha = V0, beta = A0; the inverse Jacobian
+    /// is kept).
+    void
+    reset_targets(const double volume, const double area)
+    {
+      V0 = volume;
+      A0 = area;
+      al = volume;
+      be = area;
+    }
+    double
+    volume_target() const
+    {
+      return V0;
+    }
+    double
+    area_target() const
+    {
+      return A0;
+    }
+    /// Targets, shifted targets and the inverse Jacobian.
+    void
+    save(Checkpoint &c, const std::string &prefix) const override;
+    void
+    load(const Checkpoint &c, const std::string &prefix) override;
 
     double
     alpha() const

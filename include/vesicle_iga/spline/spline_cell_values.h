@@ -6,7 +6,7 @@
 
 #include <vesicle_iga/spline/nurbs_geometry.h>
 #include <vesicle_iga/spline/spline_space.h>
-#include <vesicle_iga/spline/sum_factorization.h>
+#include <vesicle_iga/spline/tensor_product_factors.h>
 
 #include <array>
 #include <memory>

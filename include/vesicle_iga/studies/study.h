@@ -4,6 +4,8 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 
+#include <vesicle_iga/base/run_context.h>
+
 #include <functional>
 #include <memory>
 #include <string>
@@ -13,18 +15,6 @@ namespace vesicle_iga
 {
   using namespace dealii;
 
-  /// What every study gets from the program: where to write, how much to
-  /// print, the communicator.
-  struct RunContext
-  {
-    MPI_Comm     communicator;
-    unsigned int dimension;
-    std::string  output_directory;
-    /// Print iteration counts and timings (test .prm files turn this off so
-    /// that outputs do not depend on the machine or the partition).
-    bool               print_details;
-    ConditionalOStream pcout;
-  };
 
   /// A study: what one .prm file runs (set Study = <name>).
   class Study

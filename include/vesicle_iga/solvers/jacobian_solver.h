@@ -1,0 +1,91 @@
+#pragma once
+
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_sparsity_pattern.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <vesicle_iga/solvers/linear_solver.h>
+
+#include <functional>
+#include <memory>
+#include <string>
+
+namespace vesicle_iga
+{
+  /**
+   * The linear systems of Newton's method, K dx = b: the Jacobian matrix,
+   * the Krylov method and preconditioner of LinearSolverParameters and the
+   * policy for rebuilding a caller's preconditioner (spline multigrid,
+   * velocity-pressure blocks):
+   *  - every matrix: rebuilt for every new Jacobian (the flow blocks,
+   *    which depend on the state through their Schur approximation);
+   *  - while effective: rebuilt for the first Jacobian of a Newton solve
+   *    and when a solve needs more than 2 n_1 + 5 iterations, n_1 the count
+   *    right after the last rebuild (the multigrid of the phase field:
+   *    the matrix changes little between Newton iterations and the set-up
+   *    costs about two Krylov solves).
+   * A Krylov failure throws SolverFailure.
+   */
+  class JacobianSolver
+  {
+  public:
+    enum class Reuse
+    {
+      every_matrix,
+      while_effective
+    };
+
+    JacobianSolver(const LinearSolverParameters              &parameters,
+                   const dealii::AffineConstraints<double>   &increment_constraints,
+                   const dealii::TrilinosWrappers::SparsityPattern &sparsity);
+
+    /// A preconditioner of the caller's (required by the gmres-mg, cg-mg and
+    /// fgmres-block methods), its rebuild policy and what must happen
+    /// before each rebuild (e.g. the lumped operators of the flow blocks).
+    void
+    set_preconditioner(std::unique_ptr<MatrixPreconditioner> preconditioner,
+                       const Reuse                           reuse,
+                       std::function<void()> before_setup = {});
+
+    dealii::TrilinosWrappers::SparseMatrix &
+    matrix()
+    {
+      return jacobian;
+    }
+    /// A new Jacobian is in matrix(); @p first_of_solve: the first of a
+    /// Newton solve.
+    void
+    matrix_changed(const bool first_of_solve);
+
+    /// Solve K x = b (x: initial guess in, solution out, constrained
+    /// entries set); throws SolverFailure.
+    LinearSolveResult
+    solve(dealii::TrilinosWrappers::MPI::Vector       &x,
+          const dealii::TrilinosWrappers::MPI::Vector &b);
+
+    const dealii::AffineConstraints<double> &
+    constraints() const
+    {
+      return increment_constraints;
+    }
+    /// One line for logs.
+    std::string
+    description() const;
+    MatrixPreconditioner *
+    preconditioner()
+    {
+      return caller_preconditioner.get();
+    }
+
+  private:
+    const LinearSolverParameters             parameters;
+    const dealii::AffineConstraints<double> &increment_constraints;
+    dealii::TrilinosWrappers::SparseMatrix   jacobian;
+    std::unique_ptr<MatrixPreconditioner>    caller_preconditioner;
+    Reuse                                    reuse = Reuse::every_matrix;
+    std::function<void()>                    before_setup;
+    bool                                     stale            = true;
+    unsigned int                             first_iterations = 0;
+  };
+} // namespace vesicle_iga

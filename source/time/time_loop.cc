@@ -1,0 +1,281 @@
+#include <vesicle_iga/base/input_error.h>
+#include <vesicle_iga/base/solver_failure.h>
+#include <vesicle_iga/time/time_loop.h>
+
+#include <sstream>
+
+namespace vesicle_iga
+{
+  using namespace dealii;
+
+  void
+  TimeLoop::Parameters::declare(ParameterHandler &prm, const Defaults &d)
+  {
+    prm.declare_entry("End time",
+                      d.end_time,
+                      Patterns::Double(0),
+                      "The run ends at this time (or earlier: Max steps, a "
+                      "stationary state).");
+    prm.declare_entry("Max steps",
+                      "100000",
+                      Patterns::Integer(1),
+                      "Upper bound on accepted steps.");
+    StepSizeController::Parameters::declare(prm,
+                                            d.step_control,
+                                            d.initial_dt,
+                                            d.max_dt);
+    prm.declare_entry("Checkpoint interval",
+                      d.checkpoint_interval,
+                      Patterns::Integer(0),
+                      "Write <Output directory>/checkpoint.h5 every N "
+                      "accepted steps (0: only at the end and when the run "
+                      "fails); it holds everything a restart needs.");
+    prm.declare_entry("VTU interval",
+                      "0",
+                      Patterns::Integer(0),
+                      "Write the fields every N accepted steps (0: the "
+                      "final state only).");
+    prm.declare_entry("Restart from",
+                      "",
+                      Patterns::Anything(),
+                      "A checkpoint.h5 of a run of this study with the same "
+                      "mesh, degree and fields (any number of ranks) to "
+                      "continue from; time-series.csv keeps its rows up to "
+                      "the checkpoint's step. Empty: start from the initial "
+                      "state.");
+  }
+
+
+  void
+  TimeLoop::Parameters::parse(ParameterHandler &prm, const std::string &section)
+  {
+    end_time            = prm.get_double("End time");
+    max_steps           = prm.get_integer("Max steps");
+    checkpoint_interval = prm.get_integer("Checkpoint interval");
+    vtu_interval        = prm.get_integer("VTU interval");
+    restart_file        = prm.get("Restart from");
+    step.parse(prm, section);
+  }
+
+
+  TimeLoop::TimeLoop(const Parameters &parameters,
+                     const RunContext &context,
+                     TimerOutput      &timer)
+    : parameters(parameters)
+    , context(context)
+    , timer(timer)
+    , controller(parameters.step)
+  {}
+
+
+  void
+  TimeLoop::add_checkpointable(const std::string &prefix,
+                               Checkpointable    &object)
+  {
+    objects.emplace_back(prefix, &object);
+  }
+
+
+  void
+  TimeLoop::add_monitor(Monitor &monitor)
+  {
+    monitors.push_back(&monitor);
+  }
+
+
+  void
+  TimeLoop::add_stationarity_criterion(StationarityCriterion &criterion)
+  {
+    criteria.push_back(&criterion);
+  }
+
+
+  void
+  TimeLoop::set_output(const std::function<void(unsigned int)> &writer)
+  {
+    output = writer;
+  }
+
+
+  bool
+  TimeLoop::restore()
+  {
+    if (parameters.restart_file.empty())
+      return false;
+    const Checkpoint c =
+      Checkpoint::read(parameters.restart_file, context.communicator);
+    step_number = static_cast<unsigned int>(c.scalar("time_loop.step"));
+    controller.load(c, "time_loop.controller");
+    for (auto &[prefix, object] : objects)
+      object->load(c, prefix);
+    restarted = true;
+    return true;
+  }
+
+
+  void
+  TimeLoop::write_checkpoint() const
+  {
+    TimerOutput::Scope t(timer, "output");
+    Checkpoint         c;
+    c.scalars["time_loop.step"] = step_number;
+    controller.save(c, "time_loop.controller");
+    for (const auto &[prefix, object] : objects)
+      object->save(c, prefix);
+    c.write(context.output_directory + "/checkpoint.h5", context.communicator);
+  }
+
+
+  std::vector<std::string>
+  TimeLoop::series_columns(const TimeDependentProblem &problem) const
+  {
+    std::vector<std::string> columns = {
+      "step", "t", "dt", "newton_iterations", "krylov_iterations"};
+    for (const auto &c : problem.step_columns())
+      columns.push_back(c.first);
+    columns.emplace_back("rejected_steps");
+    for (const auto *m : monitors)
+      for (const auto &c : m->columns())
+        columns.push_back(c);
+    return columns;
+  }
+
+
+  StepInfo
+  TimeLoop::take_step(TimeDependentProblem &problem)
+  {
+    rejected = 0;
+    for (;;)
+      {
+        const double t  = problem.time();
+        const double dt = std::min(controller.dt(), parameters.end_time - t);
+        StepReport   report;
+        try
+          {
+            report = problem.solve_step(dt);
+          }
+        catch (const SolverFailure &failure)
+          {
+            ++rejected;
+            problem.reject_step();
+            if (context.print_details)
+              context.pcout << "  step from t=" << t << " with dt=" << dt
+                            << " failed: " << failure.what() << std::endl;
+            if (controller.reject_failure())
+              continue;
+            if (checkpoints)
+              write_checkpoint();
+            std::ostringstream s;
+            s << "The step from t = " << t << " failed with dt = " << dt
+              << " and dt cannot be cut below Min dt = "
+              << parameters.step.min_dt << ": " << failure.what()
+              << ". The run stops at step " << step_number
+              << "; the time series up to it is in "
+              << context.output_directory << "/" << series_name;
+            if (checkpoints)
+              s << " and the last accepted state in "
+                << context.output_directory
+                << "/checkpoint.h5 ('Restart from' continues from it)";
+            throw SolverFailure(s.str());
+          }
+        const double error =
+          controller.adaptive() ?
+            problem.local_error(parameters.step.atol, parameters.step.rtol) :
+            -1;
+        if (!controller.accept(error))
+          {
+            ++rejected;
+            problem.reject_step();
+            continue;
+          }
+        problem.accept_step();
+        ++step_number;
+        return {step_number, problem.time(), dt, controller.at_maximum(), report};
+      }
+  }
+
+
+  void
+  TimeLoop::record(const StepInfo &info, TimeDependentProblem &problem)
+  {
+    std::vector<double> row = {double(info.step),
+                               info.time,
+                               info.dt,
+                               double(info.report.newton_iterations),
+                               double(info.report.krylov_iterations)};
+    std::ostringstream  progress;
+    progress << "step " << info.step << " t=" << info.time << " dt=" << info.dt
+             << " newton=" << info.report.newton_iterations;
+    if (context.print_details)
+      progress << " krylov=" << info.report.krylov_iterations;
+    const auto counters = problem.step_columns();
+    for (unsigned int k = 0; k < counters.size(); ++k)
+      {
+        row.push_back(info.report.counters[k]);
+        progress << " " << counters[k].second << "="
+                 << info.report.counters[k];
+      }
+    row.push_back(rejected);
+    for (auto *m : monitors)
+      m->measure(info, row, progress);
+    if (series)
+      series->add_row(row);
+    context.pcout << progress.str() << std::endl;
+    if (output && parameters.vtu_interval > 0
+        && info.step % parameters.vtu_interval == 0)
+      {
+        TimerOutput::Scope t(timer, "output");
+        output(info.step);
+      }
+    if (checkpoints && parameters.checkpoint_interval > 0
+        && info.step % parameters.checkpoint_interval == 0)
+      write_checkpoint();
+  }
+
+
+  void
+  TimeLoop::run(TimeDependentProblem &problem)
+  {
+    if (!series_name.empty())
+      series = std::make_unique<TimeSeriesWriter>(
+        context.output_directory + "/" + series_name,
+        series_columns(problem),
+        context.communicator,
+        restarted ? long(step_number) : -1);
+    if (output && parameters.vtu_interval > 0 && !restarted)
+      {
+        TimerOutput::Scope t(timer, "output");
+        output(0);
+      }
+    StepInfo last{step_number, problem.time(), 0., false, {}};
+    while (problem.time() < parameters.end_time * (1 - 1e-12)
+           && step_number < parameters.max_steps && !stationary)
+      {
+        last = take_step(problem);
+        record(last, problem);
+        for (auto *c : criteria)
+          if (c->stationary(last))
+            {
+              context.pcout << c->message(last) << std::endl;
+              stationary = true;
+              break;
+            }
+      }
+    if (output
+        && (parameters.vtu_interval == 0
+            || step_number % parameters.vtu_interval != 0))
+      {
+        TimerOutput::Scope t(timer, "output");
+        output(step_number);
+      }
+    if (checkpoints)
+      write_checkpoint();
+    if (!stationary)
+      for (const auto *c : criteria)
+        {
+          const std::string m = c->not_reached_message(last);
+          if (!m.empty())
+            context.pcout << m << std::endl;
+        }
+  }
+} // namespace vesicle_iga
