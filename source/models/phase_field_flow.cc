@@ -73,16 +73,20 @@ namespace vesicle_iga
     dofs.make_sparsity_pattern(sparsity);
     linear = std::make_unique<JacobianSolver>(p.solver,
                                               increment_constraints,
-                                              sparsity);
+                                              sparsity,
+                                              &timer);
     if (p.solver.uses_multigrid())
       linear->set_preconditioner(
         std::make_unique<SplineMultigrid<dim>>(dofs,
                                                increment_constraints,
                                                p.solver.multigrid),
         JacobianSolver::Reuse::while_effective);
-    stepper = std::make_unique<GeneralizedAlphaStepper<dim>>(assembler,
-                                                             *linear,
-                                                             p.time_integration);
+    stepper = std::make_unique<GeneralizedAlphaStepper<dim>>(
+      assembler,
+      *linear,
+      p.time_integration,
+      typename GeneralizedAlphaStepper<dim>::BoundaryValues(),
+      &timer);
     if (electric)
       stepper->set_auxiliary_fields({&electric->potential()});
     ghosted.reinit(dofs.locally_owned_dofs(),

@@ -2,6 +2,8 @@
 #include <vesicle_iga/base/solver_failure.h>
 #include <vesicle_iga/solvers/jacobian_solver.h>
 
+#include <optional>
+
 namespace vesicle_iga
 {
   using namespace dealii;
@@ -9,9 +11,11 @@ namespace vesicle_iga
   JacobianSolver::JacobianSolver(
     const LinearSolverParameters            &parameters,
     const AffineConstraints<double>         &increment_constraints,
-    const TrilinosWrappers::SparsityPattern &sparsity)
+    const TrilinosWrappers::SparsityPattern &sparsity,
+    TimerOutput                             *timer)
     : parameters(parameters)
     , increment_constraints(increment_constraints)
+    , timer(timer)
   {
     jacobian.reinit(sparsity);
   }
@@ -48,14 +52,20 @@ namespace vesicle_iga
                 parameters.method,
                 "a method this study offers (gmres-mg and cg-mg serve the "
                 "phase-field solvers, fgmres-block the flow solver)");
+    std::optional<TimerOutput::Scope> scope;
     if (caller_preconditioner && stale)
       {
+        if (timer)
+          scope.emplace(*timer, "preconditioner");
         if (before_setup)
           before_setup();
         caller_preconditioner->initialize(jacobian);
         stale            = false;
         first_iterations = 0;
       }
+    scope.reset();
+    if (timer)
+      scope.emplace(*timer, "linear solve");
     LinearSolveResult result;
     try
       {

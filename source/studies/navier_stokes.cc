@@ -13,13 +13,11 @@
 
 #include <vesicle_iga/assembly/assembler.h>
 #include <vesicle_iga/base/input_error.h>
-#include <vesicle_iga/io/checkpoint.h>
 #include <vesicle_iga/io/spline_output.h>
-#include <vesicle_iga/io/time_series.h>
+#include <vesicle_iga/models/incompressible_flow.h>
 #include <vesicle_iga/parallel/natural_numbering.h>
 #include <vesicle_iga/postprocess/convergence_study_table.h>
 #include <vesicle_iga/postprocess/line_sample.h>
-#include <vesicle_iga/solvers/navier_stokes_solver.h>
 #include <vesicle_iga/spline/box_space_parameters.h>
 #include <vesicle_iga/studies/convergence_parameters.h>
 #include <vesicle_iga/studies/study.h>
@@ -82,6 +80,119 @@ namespace vesicle_iga
     }
 
 
+    /// Velocity, pressure and vorticity (2D: the scalar; 3D: its
+    /// magnitude) in the VTU output.
+    template <int dim>
+    void
+    add_flow_fields(SplineFieldWriter<dim> &writer)
+    {
+      std::vector<std::string> names;
+      for (unsigned int a = 0; a < dim; ++a)
+        names.push_back(std::string("u_") + "xyz"[a]);
+      names.push_back("p");
+      writer.add_components(names);
+      writer.add_quantity(
+        "vorticity",
+        [](const SplineCellValues<dim>            &v,
+           const unsigned int                      q,
+           const std::vector<std::vector<double>> &c) {
+          const Tensor<1, dim> gu = v.gradient(c[0], q),
+                               gv = v.gradient(c[1], q);
+          if (dim == 2)
+            return gv[0] - gu[1];
+          const Tensor<1, dim> gw = v.gradient(c[2], q);
+          return std::sqrt(std::pow(gw[1] - gv[2], 2)
+                           + std::pow(gu[2] - gw[0], 2)
+                           + std::pow(gv[0] - gu[1], 2));
+        },
+        1);
+    }
+
+
+    /// A viscosity or body force written as numbers needs no formula.
+    bool
+    is_constant(const std::string &text, std::vector<double> &values)
+    {
+      values.clear();
+      try
+        {
+          for (const auto &part : Utilities::split_string_list(text, ';'))
+            {
+              std::size_t  used = 0;
+              const double v    = std::stod(part, &used);
+              if (used != part.size())
+                return false;
+              values.push_back(v);
+            }
+        }
+      catch (...)
+        {
+          return false;
+        }
+      return true;
+    }
+
+
+    /// Kinetic energy, |div u| and the relative change of the state per
+    /// step; the steady state (change below 'Steady tolerance').
+    template <int dim>
+    class FlowMonitor : public Monitor, public StationarityCriterion
+    {
+    public:
+      FlowMonitor(const IncompressibleFlow<dim> &flow, const double tolerance)
+        : flow(flow)
+        , tolerance(tolerance)
+      {}
+      std::vector<std::string>
+      columns() const override
+      {
+        return {"kinetic_energy", "divergence_l2", "relative_change"};
+      }
+      void
+      measure(const StepInfo &,
+              std::vector<double> &row,
+              std::ostream        &progress) override
+      {
+        TrilinosWrappers::MPI::Vector difference(flow.previous_solution());
+        difference.add(-1., flow.owned_solution());
+        change = difference.l2_norm()
+                 / std::max(1e-300, flow.owned_solution().l2_norm());
+        const auto [energy, divergence] = flow.kinetic_energy_and_divergence();
+        row.insert(row.end(), {energy, divergence, change});
+        progress << " kinetic_energy=" << energy << " |div u|=" << divergence
+                 << " change=" << change;
+      }
+      bool
+      stationary(const StepInfo &) override
+      {
+        return tolerance > 0 && change < tolerance;
+      }
+      std::string
+      message(const StepInfo &info) const override
+      {
+        std::ostringstream m;
+        m << "steady: relative change below " << tolerance << " at step "
+          << info.step << ", t = " << info.time;
+        return m.str();
+      }
+      std::string
+      not_reached_message(const StepInfo &info) const override
+      {
+        if (tolerance <= 0)
+          return "";
+        std::ostringstream m;
+        m << "NOT steady: relative change above " << tolerance << " at step "
+          << info.step << ", t = " << info.time;
+        return m.str();
+      }
+
+    private:
+      const IncompressibleFlow<dim> &flow;
+      const double                   tolerance;
+      double                         change = 0;
+    };
+
+
     template <int dim>
     class NavierStokesStudy : public Study
     {
@@ -95,12 +206,23 @@ namespace vesicle_iga
       /// (velocity L2, H1, pressure L2) if an exact solution is given.
       std::vector<double>
       run_level(const unsigned int p, const unsigned int r, TimerOutput &timer);
+      FlowCoefficients<dim>
+      coefficients(const unsigned int p) const;
+      std::vector<VelocityCondition<dim>>
+      conditions(bool &level_fixed) const;
+      void
+      write_line_samples(const IncompressibleFlow<dim> &flow,
+                         const SplineSpace<dim>        &space,
+                         const std::string             &tag,
+                         const bool                     single_run) const;
+      std::vector<double>
+      errors(const IncompressibleFlow<dim> &flow, const unsigned int p) const;
 
-      RunContext            &context;
-      BoxSpaceParameters     box;
-      ConvergenceParameters  convergence;
-      LinearSolverParameters linear_solver;
-      FlowNewtonParameters   newton;
+      RunContext                  &context;
+      BoxSpaceParameters           box;
+      ConvergenceParameters        convergence;
+      IncompressibleFlowParameters flow_parameters;
+      TimeLoop::Parameters         loop_parameters;
 
       double      reynolds_number;
       std::string viscosity_text, force_text, initial_text;
@@ -111,14 +233,9 @@ namespace vesicle_iga
       };
       std::vector<BoundaryEntry> boundaries;
       std::vector<LineSample>    line_samples;
-      double                     weak_penalty;
-      bool                       weak_inflow;
       std::string                pressure_level;
-      double       dt0, dt_max, dt_growth, end_time, steady_tolerance, rho_inf;
-      unsigned int max_steps, quadrature_points, vtu_interval;
-      unsigned int checkpoint_interval;
-      std::string  restart_file;
-      bool         pressure_at_end;
+      double                     steady_tolerance;
+      unsigned int               quadrature_points;
     };
 
 
@@ -127,20 +244,22 @@ namespace vesicle_iga
                                               RunContext       &context)
       : context(context)
     {
+      const std::string prefix = std::string(section) + "/";
       prm.enter_subsection(section);
       box.parse(prm, dim);
       convergence.parse(prm, 0);
-      linear_solver.parse_flow(prm);
-      reynolds_number     = prm.get_double("Reynolds number");
-      viscosity_text      = prm.get("Viscosity");
-      force_text          = prm.get("Body force");
-      initial_text        = prm.get("Initial velocity");
-      exact_velocity_text = prm.get("Exact velocity");
-      exact_pressure_text = prm.get("Exact pressure");
-      weak_penalty        = prm.get_double("Weak penalty constant");
-      weak_inflow         = prm.get_bool("Weak inflow term");
-      pressure_level      = prm.get("Pressure level");
-      quadrature_points   = prm.get_integer("Quadrature points");
+      flow_parameters.solver.parse_flow(prm);
+      flow_parameters.newton.parse(prm);
+      reynolds_number                       = prm.get_double("Reynolds number");
+      viscosity_text                        = prm.get("Viscosity");
+      force_text                            = prm.get("Body force");
+      initial_text                          = prm.get("Initial velocity");
+      exact_velocity_text                   = prm.get("Exact velocity");
+      exact_pressure_text                   = prm.get("Exact pressure");
+      flow_parameters.weak_penalty_constant = prm.get_double("Weak penalty constant");
+      flow_parameters.weak_inflow_term      = prm.get_bool("Weak inflow term");
+      pressure_level                        = prm.get("Pressure level");
+      quadrature_points                     = prm.get_integer("Quadrature points");
       for (unsigned int b = 1; b <= n_boundaries; ++b)
         {
           prm.enter_subsection("Boundary " + std::to_string(b));
@@ -157,74 +276,35 @@ namespace vesicle_iga
           const std::string name = "Line sample " + std::to_string(l);
           prm.enter_subsection(name);
           LineSample sample;
-          sample.parse(prm,
-                       std::string(section) + "/" + name + "/",
-                       field_names,
-                       dim);
+          sample.parse(prm, prefix + name + "/", field_names, dim);
           if (!sample.name.empty())
             line_samples.push_back(sample);
           prm.leave_subsection();
         }
       prm.enter_subsection("Time stepping");
-      dt0                 = prm.get_double("Time step");
-      dt_max              = prm.get_double("Max time step");
-      dt_growth           = prm.get_double("Time step growth");
-      end_time            = prm.get_double("End time");
-      max_steps           = prm.get_integer("Max steps");
-      steady_tolerance    = prm.get_double("Steady tolerance");
-      rho_inf             = prm.get_double("rho_inf");
-      pressure_at_end     = prm.get("Pressure time level") == "t_n+1";
-      vtu_interval        = prm.get_integer("VTU interval");
-      checkpoint_interval = prm.get_integer("Checkpoint interval");
-      restart_file        = prm.get("Restart from");
-      prm.leave_subsection();
-      prm.enter_subsection("Newton");
-      newton.relative_tolerance = prm.get_double("Relative tolerance");
-      newton.absolute_tolerance = prm.get_double("Absolute tolerance");
-      newton.max_iterations     = prm.get_integer("Max iterations");
+      loop_parameters.parse(prm, prefix + "Time stepping");
+      flow_parameters.time_integration.parse(prm);
+      steady_tolerance = prm.get_double("Steady tolerance");
       prm.leave_subsection();
       prm.leave_subsection();
 
       // Report bad input before any work.
-      const std::string prefix = std::string(section) + "/";
       check_input(reynolds_number > 0,
                   prefix + "Reynolds number",
                   std::to_string(reynolds_number),
                   "> 0");
-      check_input(dt0 > 0 && dt_max >= dt0,
-                  prefix + "Time stepping/Time step",
-                  std::to_string(dt0),
-                  "> 0 and <= 'Max time step'");
-      check_input(dt_growth >= 1,
-                  prefix + "Time stepping/Time step growth",
-                  std::to_string(dt_growth),
-                  ">= 1");
-      check_input(rho_inf >= 0 && rho_inf <= 1,
-                  prefix + "Time stepping/rho_inf",
-                  std::to_string(rho_inf),
-                  "in [0, 1]");
-      check_input(restart_file.empty()
+      check_input(loop_parameters.restart_file.empty()
                     || (convergence.degrees.size() == 1
                         && convergence.refinements == 0),
                   prefix + "Time stepping/Restart from",
-                  restart_file,
+                  loop_parameters.restart_file,
                   "empty for a convergence study (several degrees or "
                   "refinements); a restart continues a single run");
       for (const unsigned int p : convergence.degrees)
         box.make_space<dim>(p, convergence.continuity);
-      for (unsigned int b = 0; b < n_boundaries; ++b)
-        {
-          const auto       &e    = boundaries[b];
-          const std::string name = prefix + "Boundary " + std::to_string(b + 1);
-          BoundarySelection<dim>(e.where, name + "/Where");
-          if (e.type == "strong" || e.type == "weak")
-            parse_function<dim>(
-              e.velocity, dim, 1, reynolds_number, name + "/Velocity");
-        }
-      parse_function<dim>(
-        viscosity_text, 1, 0, reynolds_number, prefix + "Viscosity");
-      parse_function<dim>(
-        force_text, dim, 0, reynolds_number, prefix + "Body force");
+      bool level_fixed;
+      conditions(level_fixed);
+      coefficients(2);
       parse_function<dim>(
         initial_text, dim, 1, reynolds_number, prefix + "Initial velocity");
       if (!exact_velocity_text.empty())
@@ -243,28 +323,43 @@ namespace vesicle_iga
 
 
     template <int dim>
-    std::vector<double>
-    NavierStokesStudy<dim>::run_level(const unsigned int p,
-                                      const unsigned int r,
-                                      TimerOutput       &timer)
+    FlowCoefficients<dim>
+    NavierStokesStudy<dim>::coefficients(const unsigned int p) const
     {
-      const std::string      prefix = std::string(section) + "/";
-      const SplineSpace<dim> space
-        = box.make_space<dim>(p, convergence.continuity).h_refined(r);
+      const std::string     prefix = std::string(section) + "/";
+      FlowCoefficients<dim> c;
+      c.reynolds_number           = reynolds_number;
+      c.inverse_estimate_constant = 6. * std::pow(p, 4);
+      // muparser only where the user writes a formula.
+      std::vector<double> values;
+      if (is_constant(viscosity_text, values) && values.size() == 1)
+        c.viscosity = std::make_shared<ConstantViscosity<dim>>(values[0]);
+      else
+        c.viscosity = std::make_shared<FormulaViscosity<dim>>(parse_function<dim>(
+          viscosity_text, 1, 0, reynolds_number, prefix + "Viscosity"));
+      if (is_constant(force_text, values) && values.size() == dim)
+        {
+          if (std::any_of(values.begin(), values.end(), [](double v) {
+                return v != 0;
+              }))
+            c.body_force = BodyForce<dim>(
+              std::make_shared<Functions::ConstantFunction<dim>>(values));
+        }
+      else
+        c.body_force = BodyForce<dim>(parse_function<dim>(
+          force_text, dim, 0, reynolds_number, prefix + "Body force"));
+      return c;
+    }
 
-      const auto viscosity = parse_function<dim>(
-        viscosity_text, 1, 0, reynolds_number, prefix + "Viscosity");
-      const auto force = parse_function<dim>(
-        force_text, dim, 0, reynolds_number, prefix + "Body force");
-      FlowCoefficients<dim> coefficients;
-      coefficients.reynolds_number           = reynolds_number;
-      coefficients.viscosity                 = viscosity.get();
-      coefficients.body_force                = force.get();
-      coefficients.inverse_estimate_constant = 6. * std::pow(p, 4);
 
-      std::vector<VelocityCondition<dim>> conditions;
-      bool                                level_fixed = false;
+    template <int dim>
+    std::vector<VelocityCondition<dim>>
+    NavierStokesStudy<dim>::conditions(bool &level_fixed) const
+    {
+      const std::string                   prefix = std::string(section) + "/";
+      std::vector<VelocityCondition<dim>> result;
       std::array<bool, 2 * dim>           face_touched{};
+      level_fixed = false;
       for (unsigned int b = 0; b < n_boundaries; ++b)
         {
           const auto       &e    = boundaries[b];
@@ -275,7 +370,7 @@ namespace vesicle_iga
           if (e.type == "outflow")
             level_fixed = true;
           else if (e.type == "strong" || e.type == "weak")
-            conditions.push_back(
+            result.push_back(
               {where,
                parse_function<dim>(
                  e.velocity, dim, 1, reynolds_number, name + "/Velocity"),
@@ -285,236 +380,122 @@ namespace vesicle_iga
       for (unsigned int f = 0; f < 2 * dim; ++f)
         if (!box.periodic[f / 2] && !face_touched[f])
           level_fixed = true;
-      const bool fix_mean = pressure_level == "mean zero"
-                            || (pressure_level == "auto" && !level_fixed);
+      return result;
+    }
 
-      const unsigned int n_q
-        = quadrature_points > 0 ? quadrature_points : p + 2;
-      NavierStokesSolver<dim> solver(context.communicator,
-                                     space,
-                                     coefficients,
-                                     conditions,
-                                     weak_penalty,
-                                     weak_inflow,
-                                     fix_mean,
-                                     QGauss<1>(n_q),
-                                     linear_solver,
-                                     newton,
-                                     rho_inf,
-                                     pressure_at_end,
-                                     timer);
-      const auto              initial = parse_function<dim>(
-        initial_text, dim, 1, reynolds_number, prefix + "Initial velocity");
-      solver.set_initial_state(*initial, 0.);
-      double       dt   = dt0;
-      unsigned int step = 0;
-      if (!restart_file.empty())
-        {
-          const Checkpoint c = Checkpoint::read(restart_file,
-                                                context.communicator);
-          check_input(c.scalar("n_basis") == space.n_basis(),
-                      prefix + "Time stepping/Restart from",
-                      restart_file,
-                      "a checkpoint of the same mesh and degree (it has "
-                        + std::to_string(int(c.scalar("n_basis")))
-                        + " basis functions, this run "
-                        + std::to_string(space.n_basis()) + ")");
-          TrilinosWrappers::MPI::Vector solution(solver.owned_solution()),
-            rate(solver.owned_rate());
-          scatter_natural(solver.dofs(), c.vector("solution"), solution);
-          scatter_natural(solver.dofs(), c.vector("rate"), rate);
-          solver.set_state(solution, rate, c.scalar("t"));
-          dt   = c.scalar("dt");
-          step = static_cast<unsigned int>(c.scalar("step"));
-          context.pcout << "restart from " << restart_file << ": step " << step
-                        << ", t = " << solver.time() << ", dt = " << dt
-                        << std::endl;
-        }
-      const auto write_checkpoint = [&]() {
-        TimerOutput::Scope scope(timer, "output");
-        Checkpoint         c;
-        c.vectors["solution"]
-          = gather_natural(solver.dofs(), solver.owned_solution());
-        c.vectors["rate"] = gather_natural(solver.dofs(), solver.owned_rate());
-        c.scalars         = {{"t", solver.time()},
-                             {"dt", dt},
-                             {"step", double(step)},
-                             {"n_basis", double(space.n_basis())}};
-        c.write(context.output_directory + "/checkpoint.h5",
-                context.communicator);
-      };
 
-      const std::string tag
-        = "p" + std::to_string(p) + "-level" + std::to_string(r);
-      const bool single_run
-        = convergence.degrees.size() == 1 && convergence.refinements == 0;
-      TimeSeriesWriter series(context.output_directory + "/time-series"
-                                + (single_run ? "" : "-" + tag) + ".csv",
-                              {"step",
-                               "t",
-                               "dt",
-                               "newton_iterations",
-                               "krylov_iterations",
-                               "kinetic_energy",
-                               "divergence_l2",
-                               "relative_change"},
-                              context.communicator,
-                              restart_file.empty() ? -1 : long(step));
+    template <int dim>
+    std::vector<double>
+    NavierStokesStudy<dim>::run_level(const unsigned int p,
+                                      const unsigned int r,
+                                      TimerOutput       &timer)
+    {
+      const SplineSpace<dim> space =
+        box.make_space<dim>(p, convergence.continuity).h_refined(r);
+      const FlowCoefficients<dim> coefficients = this->coefficients(p);
+      bool                        level_fixed;
+      const auto                  conditions = this->conditions(level_fixed);
+      IncompressibleFlowParameters parameters = flow_parameters;
+      parameters.fix_pressure_mean =
+        pressure_level == "mean zero"
+        || (pressure_level == "auto" && !level_fixed);
+      parameters.quadrature_points =
+        quadrature_points > 0 ? quadrature_points : p + 2;
+      IncompressibleFlow<dim> flow(
+        context.communicator, space, coefficients, conditions, parameters, timer);
+      flow.set_initial_state(*parse_function<dim>(initial_text,
+                                                  dim,
+                                                  1,
+                                                  reynolds_number,
+                                                  std::string(section)
+                                                    + "/Initial velocity"),
+                             0.);
+
+      const std::string tag =
+        "p" + std::to_string(p) + "-level" + std::to_string(r);
+      const bool single_run =
+        convergence.degrees.size() == 1 && convergence.refinements == 0;
+      TimeLoop         loop(loop_parameters, context, timer);
+      FlowMonitor<dim> monitor(flow, steady_tolerance);
+      loop.add_checkpointable("flow", flow);
+      loop.add_monitor(monitor);
+      loop.add_stationarity_criterion(monitor);
+      loop.enable_checkpoints(single_run);
+      loop.set_time_series_name(single_run ? "time-series.csv" :
+                                             "time-series-" + tag + ".csv");
+      SplineFieldWriter<dim> writer(flow.dofs(), nullptr);
+      add_flow_fields(writer);
+      if (convergence.write_vtu)
+        loop.set_output([&](const unsigned int step) {
+          writer.write(flow.solution(),
+                       context.output_directory,
+                       "flow-" + (single_run ? "" : tag + "-")
+                         + Utilities::int_to_string(step, 5));
+        });
+      if (loop.restore())
+        context.pcout << "restart from " << loop_parameters.restart_file
+                      << ": step " << loop.step() << ", t = " << flow.time()
+                      << ", dt = " << loop.next_dt() << std::endl;
       context.pcout
         << "Navier-Stokes (RBVMS): " << dim << "D, degree " << p << ", C^"
         << (convergence.continuity < 0 ? int(p) - 1 : convergence.continuity)
-        << ", " << space.n_elements() << " elements, " << solver.dofs().n_dofs()
+        << ", " << space.n_elements() << " elements, " << flow.dofs().n_dofs()
         << " unknowns, Re = " << reynolds_number << ", pressure level "
-        << (fix_mean ? "zero mean" : "set by the boundary") << std::endl;
+        << (parameters.fix_pressure_mean ? "zero mean" : "set by the boundary")
+        << std::endl;
+      loop.run(flow);
+      write_line_samples(flow, space, tag, single_run);
+      return errors(flow, p);
+    }
 
-      SplineFieldWriter<dim> writer(solver.dofs(), nullptr);
-      {
-        std::vector<std::string> names;
-        for (unsigned int a = 0; a < dim; ++a)
-          names.push_back(std::string("u_") + "xyz"[a]);
-        names.push_back("p");
-        writer.add_components(names);
-        writer.add_quantity(
-          "vorticity",
-          [](const SplineCellValues<dim>            &v,
-             const unsigned int                      q,
-             const std::vector<std::vector<double>> &c) {
-            // 2D: the scalar vorticity; 3D: its magnitude.
-            const Tensor<1, dim> gu = v.gradient(c[0], q),
-                                 gv = v.gradient(c[1], q);
-            if (dim == 2)
-              return gv[0] - gu[1];
-            const Tensor<1, dim> gw = v.gradient(c[2], q);
-            return std::sqrt(std::pow(gw[1] - gv[2], 2)
-                             + std::pow(gu[2] - gw[0], 2)
-                             + std::pow(gv[0] - gu[1], 2));
-          },
-          1);
-      }
-      const auto write_vtu = [&](const unsigned int step) {
-        TimerOutput::Scope scope(timer, "output");
-        writer.write(solver.solution(),
-                     context.output_directory,
-                     "flow-" + (single_run ? "" : tag + "-")
-                       + Utilities::int_to_string(step, 5));
-      };
-      if (vtu_interval > 0 && convergence.write_vtu && restart_file.empty())
-        write_vtu(0);
 
-      bool steady = false;
-      while (solver.time() < end_time * (1 - 1e-12) && step < max_steps)
+    template <int dim>
+    void
+    NavierStokesStudy<dim>::write_line_samples(
+      const IncompressibleFlow<dim> &flow,
+      const SplineSpace<dim>        &space,
+      const std::string             &tag,
+      const bool                     single_run) const
+    {
+      if (line_samples.empty())
+        return;
+      const std::vector<double> natural =
+        gather_natural(flow.dofs(), flow.solution());
+      for (const auto &sample : line_samples)
         {
-          double step_dt = std::min(dt, end_time - solver.time());
-          TrilinosWrappers::MPI::Vector previous(solver.owned_solution());
-          FlowStepResult                result = solver.advance(step_dt);
-          // A step whose Newton iteration fails is repeated with dt / 4
-          // (the state is unchanged), as the phase-field controller does.
-          unsigned int rejected = 0;
-          while (!result.converged && rejected < 10)
-            {
-              ++rejected;
-              dt      = step_dt / 4;
-              step_dt = dt;
-              context.pcout << "  Newton did not converge (residual "
-                            << result.residual
-                            << "): retry with dt = " << step_dt << std::endl;
-              result = solver.advance(step_dt);
-            }
-          if (!result.converged && single_run)
-            write_checkpoint();
-          check_input(result.converged,
-                      prefix + "Time stepping/Time step",
-                      std::to_string(dt0),
-                      "a step the Newton iteration can take: the step from "
-                      "t = "
-                        + std::to_string(solver.time())
-                        + " did not converge even with dt = "
-                        + std::to_string(step_dt)
-                        + "; the run stops here (the time series so far is "
-                          "kept, and the last accepted state in "
-                          "checkpoint.h5)");
-          ++step;
-          previous.add(-1., solver.owned_solution());
-          const double change
-            = previous.l2_norm()
-              / std::max(1e-300, solver.owned_solution().l2_norm());
-          const auto [energy, divergence]
-            = solver.kinetic_energy_and_divergence();
-          series.add_row({double(step),
-                          solver.time(),
-                          step_dt,
-                          double(result.newton_iterations),
-                          double(result.krylov_iterations),
-                          energy,
-                          divergence,
-                          change});
-          context.pcout << "step " << step << " t=" << solver.time()
-                        << " dt=" << step_dt
-                        << " newton=" << result.newton_iterations;
-          if (context.print_details)
-            context.pcout << " krylov=" << result.krylov_iterations;
-          context.pcout << " kinetic_energy=" << energy
-                        << " |div u|=" << divergence << " change=" << change
-                        << std::endl;
-          if (vtu_interval > 0 && convergence.write_vtu
-              && step % vtu_interval == 0)
-            write_vtu(step);
-          if (steady_tolerance > 0 && change < steady_tolerance)
-            steady = true;
-          else
-            dt = std::min(dt * dt_growth, dt_max);
-          if (single_run && checkpoint_interval > 0
-              && step % checkpoint_interval == 0)
-            write_checkpoint();
-          if (steady)
-            break;
+          LineSample named = sample;
+          if (!single_run)
+            named.name += "-" + tag;
+          const auto [deviation, integral] = write_line_sample(
+            named,
+            space,
+            natural,
+            dim + 1,
+            context.output_directory,
+            Utilities::MPI::this_mpi_process(context.communicator) == 0);
+          if (sample.print_integral)
+            context.pcout << named.name << ".csv: integral of "
+                          << sample.field_name
+                          << " along the line: " << integral << std::endl;
+          if (!sample.reference.empty())
+            context.pcout << named.name << ".csv: largest deviation of "
+                          << sample.field_name << " from " << sample.reference
+                          << ": " << deviation << std::endl;
         }
-      if (single_run)
-        write_checkpoint();
-      if (steady_tolerance > 0)
-        context.pcout << (steady ? "steady: relative change below " :
-                                   "NOT steady: relative change above ")
-                      << steady_tolerance << " at step " << step
-                      << ", t = " << solver.time() << std::endl;
-      if (convergence.write_vtu && (vtu_interval == 0 || step % vtu_interval))
-        write_vtu(step);
+    }
 
-      if (!line_samples.empty())
-        {
-          const std::vector<double> natural
-            = gather_natural(solver.dofs(), solver.solution());
-          for (const auto &sample : line_samples)
-            {
-              LineSample named = sample;
-              if (!single_run)
-                named.name += "-" + tag;
-              const auto [deviation, integral] = write_line_sample(
-                named,
-                space,
-                natural,
-                dim + 1,
-                context.output_directory,
-                Utilities::MPI::this_mpi_process(context.communicator) == 0);
-              if (sample.print_integral)
-                context.pcout << named.name << ".csv: integral of "
-                              << sample.field_name
-                              << " along the line: " << integral << std::endl;
-              if (!sample.reference.empty())
-                context.pcout << named.name << ".csv: largest deviation of "
-                              << sample.field_name << " from "
-                              << sample.reference << ": " << deviation
-                              << std::endl;
-            }
-        }
 
+    template <int dim>
+    std::vector<double>
+    NavierStokesStudy<dim>::errors(const IncompressibleFlow<dim> &flow,
+                                   const unsigned int             p) const
+    {
       if (exact_velocity_text.empty())
         return {};
-      auto exact_u = parse_function<dim>(exact_velocity_text,
-                                         dim,
-                                         0,
-                                         reynolds_number,
-                                         prefix + "Exact velocity");
-      exact_u->set_time(solver.time());
+      const std::string prefix  = std::string(section) + "/";
+      auto              exact_u = parse_function<dim>(
+        exact_velocity_text, dim, 0, reynolds_number, prefix + "Exact velocity");
+      exact_u->set_time(flow.time());
       std::shared_ptr<FunctionParser<dim>> exact_p;
       if (!exact_pressure_text.empty())
         {
@@ -523,17 +504,17 @@ namespace vesicle_iga
                                         0,
                                         reynolds_number,
                                         prefix + "Exact pressure");
-          exact_p->set_time(solver.time());
+          exact_p->set_time(flow.time());
         }
       // The pressure is compared up to a constant: both sides with zero mean.
       const QGauss<1> error_quadrature(p + 3
                                        + convergence.extra_quadrature_points);
       const auto      means = integrate_field<dim>(
-        solver.dofs(),
+        flow.dofs(),
         nullptr,
         error_quadrature,
         0,
-        solver.solution(),
+        flow.solution(),
         3,
         [&](const SplineCellValues<dim>            &v,
             const unsigned int                      q,
@@ -546,11 +527,11 @@ namespace vesicle_iga
         });
       const double shift  = (means[0] - means[1]) / means[2];
       const auto   errors = integrate_field<dim>(
-        solver.dofs(),
+        flow.dofs(),
         nullptr,
         error_quadrature,
         1,
-        solver.solution(),
+        flow.solution(),
         3,
         [&](const SplineCellValues<dim>            &v,
             const unsigned int                      q,
@@ -704,68 +685,15 @@ namespace vesicle_iga
             LineSample::declare(prm, "u|v|w|p");
             prm.leave_subsection();
           }
+        NewtonParameters::declare(prm, "20", "1e-8", "1e-10");
         prm.enter_subsection("Time stepping");
-        prm.declare_entry("Time step", "0.1", Patterns::Double(0), "First dt.");
-        prm.declare_entry("Max time step",
-                          "0.1",
-                          Patterns::Double(0),
-                          "Upper bound of dt.");
-        prm.declare_entry("Time step growth",
-                          "1",
-                          Patterns::Double(),
-                          "dt is multiplied by this after every step (>= 1; "
-                          "pseudo-time stepping to a steady state).");
-        prm.declare_entry("End time", "1", Patterns::Double(0), "Final time.");
-        prm.declare_entry("Max steps",
-                          "100000",
-                          Patterns::Integer(1),
-                          "Stop after this many steps.");
+        TimeLoop::Parameters::declare(prm, {"fixed", "0.1", "0.1", "1"});
+        GeneralizedAlphaParameters::declare(prm, "0.5");
         prm.declare_entry("Steady tolerance",
                           "0",
                           Patterns::Double(0),
                           "> 0: stop when |U_{n+1} - U_n| / |U_{n+1}| falls "
                           "below this (steady state).");
-        prm.declare_entry("rho_inf",
-                          "0.5",
-                          Patterns::Double(0, 1),
-                          "Spectral radius at infinity of generalized-alpha "
-                          "(N3).");
-        prm.declare_entry("Pressure time level",
-                          "t_n+1",
-                          Patterns::Selection("t_n+1|t_n+alpha_f"),
-                          "Where the pressure is evaluated (spec 4.9).");
-        prm.declare_entry("VTU interval",
-                          "0",
-                          Patterns::Integer(0),
-                          "Write velocity, pressure and vorticity every so "
-                          "many steps (0: final state only; 'Write VTU' "
-                          "switches output off).");
-        prm.declare_entry("Checkpoint interval",
-                          "10",
-                          Patterns::Integer(0),
-                          "Write <Output directory>/checkpoint.h5 (velocity, "
-                          "pressure, their rates, t, dt, step) every N steps "
-                          "of a single run (0: only at the end and when a "
-                          "step fails).");
-        prm.declare_entry("Restart from",
-                          "",
-                          Patterns::Anything(),
-                          "A checkpoint.h5 of a flow run with the same mesh "
-                          "and degree (any number of ranks) to continue "
-                          "from; time-series.csv keeps its rows up to the "
-                          "checkpoint's step. Empty: start from 'Initial "
-                          "velocity'.");
-        prm.leave_subsection();
-        prm.enter_subsection("Newton");
-        prm.declare_entry("Relative tolerance",
-                          "1e-8",
-                          Patterns::Double(0),
-                          "");
-        prm.declare_entry("Absolute tolerance",
-                          "1e-10",
-                          Patterns::Double(0),
-                          "Newton stops when |R| <= max(rtol |R_0|, atol).");
-        prm.declare_entry("Max iterations", "20", Patterns::Integer(1), "");
         prm.leave_subsection();
         prm.leave_subsection();
       },

@@ -1,4 +1,6 @@
 #include <vesicle_iga/io/field_checkpoint.h>
+
+#include <optional>
 #include <vesicle_iga/time/generalized_alpha.h>
 #include <vesicle_iga/time/local_error_estimate.h>
 
@@ -39,13 +41,15 @@ namespace vesicle_iga
     const SystemAssembler<dim> &assembler,
     JacobianSolver             &jacobian_solver,
     const Parameters           &parameters,
-    const BoundaryValues       &boundary_values)
+    const BoundaryValues       &boundary_values,
+    TimerOutput                *timer)
     : assembler(assembler)
     , dofs(assembler.get_dofs())
     , linear(jacobian_solver)
     , alpha(parameters.rho_inf)
     , algebraic_at_end(parameters.algebraic_at_end)
     , boundary_values(boundary_values)
+    , timer(timer)
   {
     const MPI_Comm comm   = dofs.get_mesh().get_communicator();
     const auto    &owned  = dofs.locally_owned_dofs();
@@ -74,6 +78,18 @@ namespace vesicle_iga
     U_rate     = 0;
     t          = t0;
     dt_previous = 0;
+  }
+
+
+  template <int dim>
+  void
+  GeneralizedAlphaStepper<dim>::set_state(
+    const TrilinosWrappers::MPI::Vector &U_n,
+    const TrilinosWrappers::MPI::Vector &rate_n,
+    const double                         t_n)
+  {
+    set_initial_state(U_n, t_n);
+    U_rate = rate_n;
   }
 
 
@@ -124,6 +140,9 @@ namespace vesicle_iga
     TrilinosWrappers::MPI::Vector       *residual,
     const bool                           jacobian)
   {
+    std::optional<TimerOutput::Scope> scope;
+    if (timer)
+      scope.emplace(*timer, jacobian ? "assembly" : "residual");
     set_stage(rate_n1);
     assembler.assemble(state,
                        linear.constraints(),

@@ -35,8 +35,8 @@ main(int argc, char *argv[])
       "set Where = x-min; x-max; y-min\nset Velocity = 0; 0\nend\n"
       "subsection Boundary 2\nset Type = weak\nset Where = y-max\n"
       "set Velocity = 1; 0\nend\n"
-      "subsection Time stepping\nset Time step = 0.1\n"
-      "set Max time step = 1e6\nset Time step growth = 4\n"
+      "subsection Time stepping\nset Initial dt = 0.1\n"
+      "set Max dt = 1e6\nset Step control = growing\nset Growth factor = 4\n"
       "set End time = 1e9\nset Steady tolerance = 0\nset rho_inf = 0.5\n";
   check_restart_equivalence(out, common, "end\nend\n");
 }

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <deal.II/base/timer.h>
+
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_sparsity_pattern.h>
@@ -36,9 +38,11 @@ namespace vesicle_iga
       while_effective
     };
 
+    /// @p timer (optional): sections "preconditioner" and "linear solve".
     JacobianSolver(const LinearSolverParameters              &parameters,
                    const dealii::AffineConstraints<double>   &increment_constraints,
-                   const dealii::TrilinosWrappers::SparsityPattern &sparsity);
+                   const dealii::TrilinosWrappers::SparsityPattern &sparsity,
+                   dealii::TimerOutput                       *timer = nullptr);
 
     /// A preconditioner of the caller's (required by the gmres-mg, cg-mg and
     /// fgmres-block methods), its rebuild policy and what must happen
@@ -81,6 +85,7 @@ namespace vesicle_iga
   private:
     const LinearSolverParameters             parameters;
     const dealii::AffineConstraints<double> &increment_constraints;
+    dealii::TimerOutput                     *timer;
     dealii::TrilinosWrappers::SparseMatrix   jacobian;
     std::unique_ptr<MatrixPreconditioner>    caller_preconditioner;
     Reuse                                    reuse = Reuse::every_matrix;

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/timer.h>
 
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/trilinos_vector.h>
@@ -73,15 +74,23 @@ namespace vesicle_iga
     using BoundaryValues =
       std::function<void(const double, dealii::AffineConstraints<double> &)>;
 
+    /// @p timer (optional): sections "residual" and "assembly" (a
+    /// Jacobian, with or without the residual).
     GeneralizedAlphaStepper(const SystemAssembler<dim> &assembler,
                             JacobianSolver             &jacobian_solver,
                             const Parameters           &parameters,
-                            const BoundaryValues       &boundary_values = {});
+                            const BoundaryValues       &boundary_values = {},
+                            dealii::TimerOutput        *timer           = nullptr);
 
     /// U(t0) = @p U0 (owned layout), zero rate.
     void
     set_initial_state(const dealii::TrilinosWrappers::MPI::Vector &U0,
                       const double                                 t0);
+    /// U_n, its rate and the time (U_{n-1} = U_n, no previous step).
+    void
+    set_state(const dealii::TrilinosWrappers::MPI::Vector &U_n,
+              const dealii::TrilinosWrappers::MPI::Vector &rate_n,
+              const double                                 t_n);
     /// Auxiliary fields of the assembler (ghosted), in its order.
     void
     set_auxiliary_fields(
@@ -129,6 +138,16 @@ namespace vesicle_iga
     {
       return U_next;
     }
+    /// The stage of a step of size @p step at the trial rate @p rate_n1
+    /// (what assemble() evaluates at; for tests and checks).
+    const AssemblyState &
+    stage_at(const dealii::TrilinosWrappers::MPI::Vector &rate_n1,
+             const double                                 step)
+    {
+      dt = step;
+      set_stage(rate_n1);
+      return state;
+    }
     /// The state at the stage of the last assembly (for the step just
     /// solved: the converged stage).
     const AssemblyState &
@@ -173,6 +192,7 @@ namespace vesicle_iga
     const GeneralizedAlpha             alpha;
     const bool                         algebraic_at_end;
     const BoundaryValues               boundary_values;
+    dealii::TimerOutput               *timer;
     /// Owned entries of the algebraic components.
     std::vector<dealii::types::global_dof_index> algebraic_dofs;
 
