@@ -7,7 +7,7 @@
 #include <deal.II/fe/mapping_q.h>
 #include <deal.II/numerics/data_out.h>
 
-#include <vesicle_iga/assembly/assembler.h>
+#include <vesicle_iga/postprocess/field_integrals.h>
 #include <vesicle_iga/io/spline_output.h>
 
 #include <algorithm>

@@ -2,8 +2,8 @@
 
 #include <deal.II/lac/trilinos_sparsity_pattern.h>
 
-#include <vesicle_iga/assembly/boundary_selection.h>
-#include <vesicle_iga/assembly/dirichlet_constraints.h>
+#include <vesicle_iga/fields/boundary_selection.h>
+#include <vesicle_iga/fields/dirichlet_constraints.h>
 #include <vesicle_iga/models/electric_potential.h>
 #include <vesicle_iga/solvers/spline_multigrid.h>
 

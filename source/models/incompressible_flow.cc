@@ -2,7 +2,7 @@
 
 #include <deal.II/lac/trilinos_sparsity_pattern.h>
 
-#include <vesicle_iga/assembly/dirichlet_constraints.h>
+#include <vesicle_iga/fields/dirichlet_constraints.h>
 #include <vesicle_iga/models/incompressible_flow.h>
 #include <vesicle_iga/parallel/natural_numbering.h>
 #include <vesicle_iga/solvers/flow_block_preconditioner.h>

@@ -9,12 +9,12 @@
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/timer.h>
 
-#include <vesicle_iga/assembly/assembler.h>
-#include <vesicle_iga/assembly/dirichlet_constraints.h>
+#include <vesicle_iga/postprocess/field_integrals.h>
+#include <vesicle_iga/fields/dirichlet_constraints.h>
 #include <vesicle_iga/io/spline_output.h>
 #include <vesicle_iga/postprocess/convergence_study_table.h>
 #include <vesicle_iga/postprocess/manufactured_solution.h>
-#include <vesicle_iga/solvers/linear_spline_problem.h>
+#include <vesicle_iga/models/stationary_problem.h>
 #include <vesicle_iga/spline/box_space_parameters.h>
 #include <vesicle_iga/studies/convergence_parameters.h>
 #include <vesicle_iga/studies/study.h>
@@ -93,7 +93,7 @@ namespace vesicle_iga
           {
             const SplineSpace<dim> space
               = box.make_space<dim>(p, convergence.continuity).h_refined(r);
-            LinearSplineProblem<dim> problem(context.communicator,
+            StationaryProblem<dim> problem(context.communicator,
                                              space,
                                              nullptr,
                                              1);
@@ -113,10 +113,11 @@ namespace vesicle_iga
                                                     exact,
                                                     {true},
                                                     problem.constraints());
-            const BiharmonicTerm<dim>        bilaplace(f);
-            const BoundaryLaplacianTerm<dim> moment(
+            BiharmonicTerm<dim>        bilaplace(0, f);
+            BoundaryLaplacianTerm<dim> moment(
+              0,
               clamped ? BoundarySelection<dim>() : all, laplacian);
-            const auto result = problem.assemble_and_solve(
+            const auto result = problem.solve(
               {&bilaplace, &moment},
               QGauss<1>(p + 1 + convergence.extra_quadrature_points),
               solver,

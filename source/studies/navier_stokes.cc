@@ -11,7 +11,7 @@
 #include <deal.II/base/timer.h>
 #include <deal.II/base/utilities.h>
 
-#include <vesicle_iga/assembly/assembler.h>
+#include <vesicle_iga/postprocess/field_integrals.h>
 #include <vesicle_iga/base/input_error.h>
 #include <vesicle_iga/io/spline_output.h>
 #include <vesicle_iga/models/incompressible_flow.h>

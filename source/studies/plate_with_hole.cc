@@ -10,12 +10,12 @@
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/timer.h>
 
-#include <vesicle_iga/assembly/assembler.h>
-#include <vesicle_iga/assembly/dirichlet_constraints.h>
+#include <vesicle_iga/postprocess/field_integrals.h>
+#include <vesicle_iga/fields/dirichlet_constraints.h>
 #include <vesicle_iga/base/input_error.h>
 #include <vesicle_iga/io/spline_output.h>
 #include <vesicle_iga/postprocess/convergence_study_table.h>
-#include <vesicle_iga/solvers/linear_spline_problem.h>
+#include <vesicle_iga/models/stationary_problem.h>
 #include <vesicle_iga/studies/convergence_parameters.h>
 #include <vesicle_iga/studies/plate_with_hole_geometry.h>
 #include <vesicle_iga/studies/study.h>
@@ -153,13 +153,14 @@ namespace vesicle_iga
     {
       const KirschSolution          exact(E, nu, Tx, 1.);
       const auto                    coarse = make_plate_with_hole_geometry();
-      const LinearElasticityTerm<2> elasticity(E, nu, true);
+      LinearElasticityTerm<2> elasticity(0, E, nu, true);
       // xi = 0 is y = 0 (u_y = 0), xi = 1 is x = 0 (u_x = 0), eta = 1 the
       // outer edges with the exact traction, eta = 0 the free hole.
       const BoundarySelection<2>       symmetry_y("x-min", "symmetry");
       const BoundarySelection<2>       symmetry_x("x-max", "symmetry");
       const BoundarySelection<2>       outer("y-max", "traction");
-      const TractionTerm<2>            traction(outer,
+      TractionTerm<2>                  traction(0,
+                                 outer,
                                      [&](const Point<2>     &x,
                                          const Tensor<1, 2> &n) {
                                        return exact.stress(x) * n;
@@ -186,7 +187,7 @@ namespace vesicle_iga
             space               = space.h_refined(r);
             const auto geometry = std::make_shared<const NurbsGeometry<2>>(
               coarse->refined_to(space));
-            LinearSplineProblem<2> problem(context.communicator,
+            StationaryProblem<2> problem(context.communicator,
                                            space,
                                            geometry,
                                            2);
@@ -202,7 +203,7 @@ namespace vesicle_iga
                                                 zero,
                                                 {true, false},
                                                 problem.constraints());
-            const auto result = problem.assemble_and_solve(
+            const auto result = problem.solve(
               {&elasticity, &traction},
               QGauss<1>(p + 1 + convergence.extra_quadrature_points),
               solver,

@@ -7,13 +7,13 @@
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/timer.h>
 
-#include <vesicle_iga/assembly/assembler.h>
-#include <vesicle_iga/assembly/dirichlet_constraints.h>
+#include <vesicle_iga/postprocess/field_integrals.h>
+#include <vesicle_iga/fields/dirichlet_constraints.h>
 #include <vesicle_iga/base/input_error.h>
 #include <vesicle_iga/io/spline_output.h>
 #include <vesicle_iga/postprocess/convergence_study_table.h>
 #include <vesicle_iga/postprocess/manufactured_solution.h>
-#include <vesicle_iga/solvers/linear_spline_problem.h>
+#include <vesicle_iga/models/stationary_problem.h>
 #include <vesicle_iga/spline/box_space_parameters.h>
 #include <vesicle_iga/studies/convergence_parameters.h>
 #include <vesicle_iga/studies/study.h>
@@ -100,7 +100,7 @@ namespace vesicle_iga
           {
             const SplineSpace<dim> space
               = box.make_space<dim>(p, convergence.continuity).h_refined(r);
-            LinearSplineProblem<dim> problem(context.communicator,
+            StationaryProblem<dim> problem(context.communicator,
                                              space,
                                              nullptr,
                                              1);
@@ -112,14 +112,15 @@ namespace vesicle_iga
                                                   problem.constraints());
             const double penalty
               = nitsche_constant > 0 ? nitsche_constant : 5. * (p + 1);
-            const LaplaceTerm<dim>          laplace(f);
-            const NitscheDirichletTerm<dim> weak(nitsche, exact, penalty);
-            const NeumannTerm<dim>          neumann(
+            LaplaceTerm<dim>          laplace(0, f);
+            NitscheDirichletTerm<dim> weak(0, nitsche, exact, penalty);
+            NeumannTerm<dim>          neumann(
+              0,
               [&](const unsigned int face, const Point<dim> &x) {
                 return !strong.contains(face, x) && !nitsche.contains(face, x);
               },
               [&](const Point<dim> &x) { return exact.gradient(x); });
-            const auto result = problem.assemble_and_solve(
+            const auto result = problem.solve(
               {&laplace, &weak, &neumann},
               QGauss<1>(p + 1 + convergence.extra_quadrature_points),
               solver,

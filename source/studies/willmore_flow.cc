@@ -13,7 +13,7 @@
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/trilinos_vector.h>
 
-#include <vesicle_iga/assembly/dirichlet_constraints.h>
+#include <vesicle_iga/fields/dirichlet_constraints.h>
 #include <vesicle_iga/base/input_error.h>
 #include <vesicle_iga/io/vesicle_output.h>
 #include <vesicle_iga/models/phase_field_flow.h>

@@ -1,24 +1,40 @@
 #include <vesicle_iga/terms/laplace.h>
 
+#include <cmath>
+
 namespace vesicle_iga
 {
+  using namespace dealii;
+
   template <int dim>
   void
-  LaplaceTerm<dim>::assemble_cell(const SplineCellValues<dim> &v,
-                                  FullMatrix<double>          &A,
-                                  Vector<double>              &b) const
+  LaplaceTerm<dim>::declare(TermDeclaration<dim> &d)
   {
-    const unsigned int n = v.n_basis_per_element();
-    for (unsigned int q = 0; q < v.n_quadrature_points(); ++q)
+    using D = Derivative<dim>;
+    d.needs_points();
+    r_value = d.residual(u, D::value);
+    for (unsigned int k = 0; k < dim; ++k)
       {
-        const double JxW = v.JxW(q);
-        const double fq  = f.value(v.quadrature_point(q));
-        for (unsigned int i = 0; i < n; ++i)
+        gradient[k]   = d.value(u, D::gradient(k));
+        r_gradient[k] = d.residual(u, D::gradient(k));
+        j_gradient[k] = d.jacobian(u, D::gradient(k), u, D::gradient(k));
+      }
+  }
+
+
+  template <int dim>
+  void
+  LaplaceTerm<dim>::evaluate(const QuadratureInputs<dim> &in,
+                             TermCoefficients            &out) const
+  {
+    for (unsigned int q = 0; q < in.size(); ++q)
+      {
+        out[r_value][q] -= f.value(in.point(q));
+        for (unsigned int k = 0; k < dim; ++k)
           {
-            const Tensor<1, dim> &gi = v.shape_grad(i, q);
-            for (unsigned int j = 0; j < n; ++j)
-              A(i, j) += gi * v.shape_grad(j, q) * JxW;
-            b(i) += v.shape_value(i, q) * fq * JxW;
+            out[r_gradient[k]][q] += in[gradient[k]][q];
+            if (out.matrix())
+              out[j_gradient[k]][q] += 1.;
           }
       }
   }
@@ -26,50 +42,49 @@ namespace vesicle_iga
 
   template <int dim>
   void
-  NitscheDirichletTerm<dim>::assemble_face(const unsigned int           face,
-                                           const SplineCellValues<dim> &v,
-                                           FullMatrix<double>          &A,
-                                           Vector<double>              &b) const
+  NitscheDirichletTerm<dim>::declare(TermDeclaration<dim> &d)
   {
-    const unsigned int n = v.n_basis_per_element();
-    for (unsigned int q = 0; q < v.n_quadrature_points(); ++q)
+    using D = Derivative<dim>;
+    d.needs_points();
+    value   = d.value(u, D::value);
+    r_value = d.residual(u, D::value);
+    j_value = d.jacobian(u, D::value, u, D::value);
+    for (unsigned int k = 0; k < dim; ++k)
       {
-        if (!selection.contains(face, v.quadrature_point(q)))
-          continue;
-        const double          JxW   = v.JxW(q);
-        const Tensor<1, dim> &nrm   = v.normal_vector(q);
-        const double          gamma = penalty / v.normal_element_size(q);
-        const double          gq    = g.value(v.quadrature_point(q));
-        for (unsigned int i = 0; i < n; ++i)
-          {
-            const double vi  = v.shape_value(i, q);
-            const double dvi = v.shape_grad(i, q) * nrm;
-            for (unsigned int j = 0; j < n; ++j)
-              {
-                const double uj  = v.shape_value(j, q);
-                const double duj = v.shape_grad(j, q) * nrm;
-                A(i, j) += (-dvi * uj - vi * duj + gamma * vi * uj) * JxW;
-              }
-            b(i) += (-dvi + gamma * vi) * gq * JxW;
-          }
+        gradient[k]         = d.value(u, D::gradient(k));
+        r_gradient[k]       = d.residual(u, D::gradient(k));
+        j_value_gradient[k] = d.jacobian(u, D::value, u, D::gradient(k));
+        j_gradient_value[k] = d.jacobian(u, D::gradient(k), u, D::value);
       }
   }
 
 
   template <int dim>
   void
-  NeumannTerm<dim>::assemble_face(const unsigned int           face,
-                                  const SplineCellValues<dim> &v,
-                                  FullMatrix<double> &,
-                                  Vector<double> &b) const
+  NitscheDirichletTerm<dim>::evaluate(const QuadratureInputs<dim> &in,
+                                      TermCoefficients            &out) const
   {
-    for (unsigned int q = 0; q < v.n_quadrature_points(); ++q)
+    for (unsigned int q = 0; q < in.size(); ++q)
       {
-        if (!where(face, v.quadrature_point(q)))
+        if (!selection.contains(in.face(), in.point(q)))
           continue;
-        const double gN = flux(v.quadrature_point(q)) * v.normal_vector(q);
-        for (unsigned int i = 0; i < v.n_basis_per_element(); ++i)
-          b(i) += v.shape_value(i, q) * gN * v.JxW(q);
+        const Tensor<1, dim> &n = in.normal(q);
+        const double gamma = penalty * std::sqrt(n * (in.metric(q) * n)) / 2;
+        const double jump  = in[value][q] - g.value(in.point(q));
+        double       du_dn = 0;
+        for (unsigned int k = 0; k < dim; ++k)
+          du_dn += in[gradient[k]][q] * n[k];
+        out[r_value][q] += -du_dn + gamma * jump;
+        for (unsigned int k = 0; k < dim; ++k)
+          out[r_gradient[k]][q] += -n[k] * jump;
+        if (!out.matrix())
+          continue;
+        out[j_value][q] += gamma;
+        for (unsigned int k = 0; k < dim; ++k)
+          {
+            out[j_value_gradient[k]][q] += -n[k];
+            out[j_gradient_value[k]][q] += -n[k];
+          }
       }
   }
 
@@ -77,6 +92,4 @@ namespace vesicle_iga
   template class LaplaceTerm<3>;
   template class NitscheDirichletTerm<2>;
   template class NitscheDirichletTerm<3>;
-  template class NeumannTerm<2>;
-  template class NeumannTerm<3>;
 } // namespace vesicle_iga

@@ -2,10 +2,14 @@
 
 namespace vesicle_iga
 {
+  using namespace dealii;
+
   template <int dim>
-  LinearElasticityTerm<dim>::LinearElasticityTerm(const double E,
-                                                  const double nu,
-                                                  const bool   plane_stress)
+  LinearElasticityTerm<dim>::LinearElasticityTerm(const unsigned int u,
+                                                  const double       E,
+                                                  const double       nu,
+                                                  const bool plane_stress)
+    : u(u)
   {
     mu     = E / (2 * (1 + nu));
     lambda = E * nu / ((1 + nu) * (1 - 2 * nu));
@@ -24,58 +28,59 @@ namespace vesicle_iga
 
   template <int dim>
   void
-  LinearElasticityTerm<dim>::assemble_cell(const SplineCellValues<dim> &v,
-                                           FullMatrix<double>          &A,
-                                           Vector<double> &) const
+  LinearElasticityTerm<dim>::declare(TermDeclaration<dim> &d)
   {
-    const unsigned int n = v.n_basis_per_element();
-    for (unsigned int q = 0; q < v.n_quadrature_points(); ++q)
-      {
-        const double JxW = v.JxW(q);
-        for (unsigned int i = 0; i < n; ++i)
-          {
-            const Tensor<1, dim> &gi = v.shape_grad(i, q);
-            for (unsigned int j = 0; j < n; ++j)
+    using D = Derivative<dim>;
+    jacobian.clear();
+    for (unsigned int a = 0; a < dim; ++a)
+      for (unsigned int k = 0; k < dim; ++k)
+        {
+          gradient[a][k]   = d.value(u + a, D::gradient(k));
+          r_gradient[a][k] = d.residual(u + a, D::gradient(k));
+          // d sigma_ak / d(d_l u_c) = lambda delta_ak delta_cl
+          //                           + mu (delta_ac delta_kl + delta_al
+          //                           delta_kc)
+          for (unsigned int c = 0; c < dim; ++c)
+            for (unsigned int l = 0; l < dim; ++l)
               {
-                const Tensor<1, dim> &gj = v.shape_grad(j, q);
-                // Block (a, b) of the element matrix for components a, b:
-                // lambda d_a v d_b u + mu (d_b v d_a u + delta_ab grad v.grad
-                // u)
-                const double gg = gi * gj;
-                for (unsigned int a = 0; a < dim; ++a)
-                  for (unsigned int c = 0; c < dim; ++c)
-                    A(a * n + i, c * n + j)
-                      += (lambda * gi[a] * gj[c] + mu * gi[c] * gj[a]
-                          + (a == c ? mu * gg : 0.))
-                         * JxW;
+                const double C = (a == k && c == l ? lambda : 0.)
+                                 + (a == c && k == l ? mu : 0.)
+                                 + (a == l && k == c ? mu : 0.);
+                if (C != 0.)
+                  jacobian.emplace_back(
+                    d.jacobian(u + a, D::gradient(k), u + c, D::gradient(l)),
+                    C);
               }
-          }
-      }
+        }
   }
 
 
   template <int dim>
   void
-  TractionTerm<dim>::assemble_face(const unsigned int           face,
-                                   const SplineCellValues<dim> &v,
-                                   FullMatrix<double> &,
-                                   Vector<double> &b) const
+  LinearElasticityTerm<dim>::evaluate(const QuadratureInputs<dim> &in,
+                                      TermCoefficients            &out) const
   {
-    const unsigned int n = v.n_basis_per_element();
-    for (unsigned int q = 0; q < v.n_quadrature_points(); ++q)
+    for (unsigned int q = 0; q < in.size(); ++q)
       {
-        if (!selection.contains(face, v.quadrature_point(q)))
-          continue;
-        const Tensor<1, dim> t
-          = traction(v.quadrature_point(q), v.normal_vector(q));
+        double div = 0;
         for (unsigned int a = 0; a < dim; ++a)
-          for (unsigned int i = 0; i < n; ++i)
-            b(a * n + i) += v.shape_value(i, q) * t[a] * v.JxW(q);
+          div += in[gradient[a][a]][q];
+        for (unsigned int a = 0; a < dim; ++a)
+          for (unsigned int k = 0; k < dim; ++k)
+            out[r_gradient[a][k]][q] +=
+              (a == k ? lambda * div : 0.)
+              + mu * (in[gradient[a][k]][q] + in[gradient[k][a]][q]);
+      }
+    if (!out.matrix())
+      return;
+    for (const auto &[handle, C] : jacobian)
+      {
+        double *j = out[handle];
+        for (unsigned int q = 0; q < in.size(); ++q)
+          j[q] += C;
       }
   }
 
   template class LinearElasticityTerm<2>;
   template class LinearElasticityTerm<3>;
-  template class TractionTerm<2>;
-  template class TractionTerm<3>;
 } // namespace vesicle_iga

@@ -17,8 +17,8 @@
 #include <deal.II/base/function.h>
 #include <deal.II/base/quadrature_lib.h>
 
-#include <vesicle_iga/assembly/dirichlet_constraints.h>
-#include <vesicle_iga/solvers/linear_spline_problem.h>
+#include <vesicle_iga/fields/dirichlet_constraints.h>
+#include <vesicle_iga/models/stationary_problem.h>
 #include <vesicle_iga/terms/biharmonic.h>
 #include <vesicle_iga/terms/laplace.h>
 
@@ -71,10 +71,10 @@ solve(const std::string &problem, const unsigned int n)
   std::array<KnotVector, dim> kv;
   for (unsigned int d = 0; d < dim; ++d)
     kv[d] = KnotVector::uniform(p, n, 0., 1.);
-  LinearSplineProblem<dim>               lsp(MPI_COMM_WORLD,
-                               SplineSpace<dim>(kv),
-                               nullptr,
-                               1);
+  StationaryProblem<dim>                 lsp(MPI_COMM_WORLD,
+                             SplineSpace<dim>(kv),
+                             nullptr,
+                             1);
   const BoundarySelection<dim>           all("all", "boundary");
   const Functions::ConstantFunction<dim> one(1.);
   const Functions::ZeroFunction<dim>     zero;
@@ -93,12 +93,11 @@ solve(const std::string &problem, const unsigned int n)
   solver.tolerance = 1e-10;
   // A small coarsest level, so that every mesh has several levels.
   solver.multigrid.coarse_size = 200;
-  const BiharmonicTerm<dim> bilaplace(one);
-  const LaplaceTerm<dim>    laplace(one);
-  const auto                result = lsp.assemble_and_solve(
-    {problem == "biharmonic" ?
-                      static_cast<const AssemblyTerm<dim> *>(&bilaplace) :
-                      static_cast<const AssemblyTerm<dim> *>(&laplace)},
+  BiharmonicTerm<dim> bilaplace(0, one);
+  LaplaceTerm<dim>    laplace(0, one);
+  const auto          result = lsp.solve(
+    {problem == "biharmonic" ? static_cast<Term<dim> *>(&bilaplace) :
+                                        static_cast<Term<dim> *>(&laplace)},
     QGauss<1>(p + 1),
     solver,
     nullptr);

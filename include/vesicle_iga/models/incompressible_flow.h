@@ -7,7 +7,7 @@
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/trilinos_vector.h>
 
-#include <vesicle_iga/assembly/boundary_selection.h>
+#include <vesicle_iga/fields/boundary_selection.h>
 #include <vesicle_iga/io/checkpoint.h>
 #include <vesicle_iga/kernel/system_assembler.h>
 #include <vesicle_iga/parallel/patch_mesh.h>

@@ -2,66 +2,88 @@
 
 #include <deal.II/base/symmetric_tensor.h>
 
-#include <vesicle_iga/assembly/assembly_term.h>
-#include <vesicle_iga/assembly/boundary_selection.h>
+#include <vesicle_iga/fields/boundary_selection.h>
+#include <vesicle_iga/kernel/term.h>
 
+#include <array>
 #include <functional>
+#include <utility>
+#include <vector>
 
 namespace vesicle_iga
 {
   /**
    * Isotropic linear elasticity (eps(v), C eps(u)) with the displacement as
-   * dim components (spec Part P, (P3)-(P4) context). In 2D either plane
+   * the dim components starting at @p u (spec Part P, (P3)-(P4) context):
+   * residual on the gradient of the test component a, sigma_ak =
+   * lambda div u delta_ak + mu (d_k u_a + d_a u_k). In 2D either plane
    * stress (the plate of spec section 5.3: lambda* = 2 lambda mu /
    * (lambda + 2 mu)) or plane strain.
    */
   template <int dim>
-  class LinearElasticityTerm : public AssemblyTerm<dim>
+  class LinearElasticityTerm : public Term<dim>
   {
   public:
-    LinearElasticityTerm(const double young_modulus,
-                         const double poisson_ratio,
-                         const bool   plane_stress);
-    unsigned int
-    derivative_order() const override
+    LinearElasticityTerm(const unsigned int u,
+                         const double       young_modulus,
+                         const double       poisson_ratio,
+                         const bool         plane_stress);
+    std::string
+    name() const override
     {
-      return 1;
+      return "linear elasticity";
     }
     void
-    assemble_cell(const SplineCellValues<dim> &v,
-                  FullMatrix<double>          &A,
-                  Vector<double>              &b) const override;
+    declare(TermDeclaration<dim> &d) override;
+    void
+    evaluate(const QuadratureInputs<dim> &in,
+             TermCoefficients            &out) const override;
 
     /// sigma = lambda tr(eps) I + 2 mu eps.
-    SymmetricTensor<2, dim>
-    stress(const SymmetricTensor<2, dim> &strain) const;
+    dealii::SymmetricTensor<2, dim>
+    stress(const dealii::SymmetricTensor<2, dim> &strain) const;
     /// eps : C eps, the energy density times two.
     double
-    energy_product(const SymmetricTensor<2, dim> &strain) const
+    energy_product(const dealii::SymmetricTensor<2, dim> &strain) const
     {
       return stress(strain) * strain;
     }
 
   private:
-    double lambda, mu;
+    const unsigned int                               u;
+    double                                           lambda, mu;
+    std::array<std::array<InputHandle, dim>, dim>    gradient;
+    std::array<std::array<ResidualHandle, dim>, dim> r_gradient;
+    /// The non-zero entries of C: test (a, d_k), trial (c, d_l), value.
+    std::vector<std::pair<JacobianHandle, double>> jacobian;
   };
 
-  /// Prescribed traction t(x, n) on the selected boundary: (v, t).
+
+  /// Prescribed traction t(x, n) on the selected boundary: residual
+  /// -(v, t) on the components starting at @p u.
   template <int dim>
-  class TractionTerm : public AssemblyTerm<dim>
+  class TractionTerm : public Term<dim>
   {
   public:
-    using TractionFunction
-      = std::function<Tensor<1, dim>(const Point<dim> &,
-                                     const Tensor<1, dim> &)>;
-    TractionTerm(const BoundarySelection<dim> &selection, TractionFunction t)
-      : selection(selection)
+    using TractionFunction =
+      std::function<dealii::Tensor<1, dim>(const dealii::Point<dim> &,
+                                           const dealii::Tensor<1, dim> &)>;
+    TractionTerm(const unsigned int            u,
+                 const BoundarySelection<dim> &selection,
+                 TractionFunction              t)
+      : u(u)
+      , selection(selection)
       , traction(t)
     {}
-    unsigned int
-    derivative_order() const override
+    std::string
+    name() const override
     {
-      return 0;
+      return "traction";
+    }
+    typename Term<dim>::Domain
+    domain() const override
+    {
+      return Term<dim>::Domain::boundary;
     }
     bool
     acts_on_face(const unsigned int face) const override
@@ -69,13 +91,30 @@ namespace vesicle_iga
       return selection.touches_face(face);
     }
     void
-    assemble_face(const unsigned int           face,
-                  const SplineCellValues<dim> &v,
-                  FullMatrix<double>          &A,
-                  Vector<double>              &b) const override;
+    declare(TermDeclaration<dim> &d) override
+    {
+      d.needs_points();
+      for (unsigned int a = 0; a < dim; ++a)
+        r_value[a] = d.residual(u + a, Derivative<dim>::value);
+    }
+    void
+    evaluate(const QuadratureInputs<dim> &in,
+             TermCoefficients            &out) const override
+    {
+      for (unsigned int q = 0; q < in.size(); ++q)
+        {
+          if (!selection.contains(in.face(), in.point(q)))
+            continue;
+          const dealii::Tensor<1, dim> t = traction(in.point(q), in.normal(q));
+          for (unsigned int a = 0; a < dim; ++a)
+            out[r_value[a]][q] -= t[a];
+        }
+    }
 
   private:
-    const BoundarySelection<dim> selection;
-    TractionFunction             traction;
+    const unsigned int              u;
+    const BoundarySelection<dim>    selection;
+    TractionFunction                traction;
+    std::array<ResidualHandle, dim> r_value;
   };
 } // namespace vesicle_iga

@@ -2,7 +2,7 @@
 
 #include <deal.II/base/function.h>
 
-#include <vesicle_iga/assembly/boundary_selection.h>
+#include <vesicle_iga/fields/boundary_selection.h>
 #include <vesicle_iga/kernel/term.h>
 #include <vesicle_iga/physics/flow_coefficients.h>
 

@@ -1,7 +1,7 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
-#include <vesicle_iga/assembly/dirichlet_constraints.h>
+#include <vesicle_iga/fields/dirichlet_constraints.h>
 #include <vesicle_iga/base/input_error.h>
 
 #include <algorithm>

@@ -1,6 +1,6 @@
 #include <deal.II/base/utilities.h>
 
-#include <vesicle_iga/assembly/boundary_selection.h>
+#include <vesicle_iga/fields/boundary_selection.h>
 #include <vesicle_iga/base/input_error.h>
 
 namespace vesicle_iga

@@ -4,7 +4,7 @@
 
 #include <deal.II/lac/affine_constraints.h>
 
-#include <vesicle_iga/assembly/boundary_selection.h>
+#include <vesicle_iga/fields/boundary_selection.h>
 #include <vesicle_iga/parallel/spline_dof_handler.h>
 
 #include <functional>
