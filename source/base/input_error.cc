@@ -4,6 +4,8 @@
 
 namespace vesicle_iga
 {
+  using namespace dealii;
+
   std::vector<double>
   parse_double_list(const std::string &text, const std::string &parameter)
   {

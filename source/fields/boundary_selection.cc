@@ -1,10 +1,12 @@
 #include <deal.II/base/utilities.h>
 
-#include <vesicle_iga/fields/boundary_selection.h>
 #include <vesicle_iga/base/input_error.h>
+#include <vesicle_iga/fields/boundary_selection.h>
 
 namespace vesicle_iga
 {
+  using namespace dealii;
+
   template <int dim>
   std::string
   BoundarySelection<dim>::face_name(const unsigned int face)

@@ -1,14 +1,16 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
-#include <vesicle_iga/fields/dirichlet_constraints.h>
 #include <vesicle_iga/base/input_error.h>
+#include <vesicle_iga/fields/dirichlet_constraints.h>
 
 #include <algorithm>
 #include <memory>
 
 namespace vesicle_iga
 {
+  using namespace dealii;
+
   namespace
   {
     /**

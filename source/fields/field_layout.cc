@@ -4,6 +4,8 @@
 
 namespace vesicle_iga
 {
+  using namespace dealii;
+
   template <int dim>
   FieldLayout<dim>::FieldLayout(const SplineSpace<dim> &space,
                                 const unsigned int      n_components)

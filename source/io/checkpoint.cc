@@ -31,16 +31,16 @@ namespace vesicle_iga
     const bool        root = Utilities::MPI::this_mpi_process(comm) == 0;
     const std::string tmp  = filename + ".tmp";
     {
-      HDF5::File               file(tmp, HDF5::File::FileAccessMode::create, comm);
+      HDF5::File file(tmp, HDF5::File::FileAccessMode::create, comm);
       std::vector<std::string> vector_names, scalar_names;
       for (const auto &[name, v] : vectors)
         {
           // Sizes are taken from rank 0 so that every rank creates the same
           // dataset (the collective call needs identical arguments).
-          const unsigned long long n =
-            Utilities::MPI::broadcast(comm, (unsigned long long)v.size(), 0);
-          auto dataset =
-            file.create_dataset<double>(name, std::vector<hsize_t>{n});
+          const unsigned long long n
+            = Utilities::MPI::broadcast(comm, (unsigned long long)v.size(), 0);
+          auto dataset
+            = file.create_dataset<double>(name, std::vector<hsize_t>{n});
           if (root)
             dataset.write(v);
           else

@@ -4,6 +4,8 @@
 
 namespace vesicle_iga
 {
+  using namespace dealii;
+
   template <int dim>
   void
   save_field(Checkpoint                                  &checkpoint,
@@ -33,14 +35,14 @@ namespace vesicle_iga
     scatter_natural(dofs, natural, v);
   }
 
-#define INSTANTIATE(dim)                                              \
-  template void save_field(Checkpoint &,                              \
-                           const std::string &,                       \
-                           const SplineDofHandler<dim> &,             \
+#define INSTANTIATE(dim)                                                   \
+  template void save_field(Checkpoint &,                                   \
+                           const std::string &,                            \
+                           const SplineDofHandler<dim> &,                  \
                            const dealii::TrilinosWrappers::MPI::Vector &); \
-  template void load_field(const Checkpoint &,                        \
-                           const std::string &,                       \
-                           const SplineDofHandler<dim> &,             \
+  template void load_field(const Checkpoint &,                             \
+                           const std::string &,                            \
+                           const SplineDofHandler<dim> &,                  \
                            dealii::TrilinosWrappers::MPI::Vector &);
   INSTANTIATE(2)
   INSTANTIATE(3)

@@ -7,13 +7,15 @@
 #include <deal.II/fe/mapping_q.h>
 #include <deal.II/numerics/data_out.h>
 
-#include <vesicle_iga/postprocess/field_integrals.h>
 #include <vesicle_iga/io/spline_output.h>
+#include <vesicle_iga/postprocess/field_integrals.h>
 
 #include <algorithm>
 
 namespace vesicle_iga
 {
+  using namespace dealii;
+
   namespace
   {
     template <int dim>

@@ -7,6 +7,8 @@
 
 namespace vesicle_iga
 {
+  using namespace dealii;
+
   TimeSeriesWriter::TimeSeriesWriter(const std::string              &filename,
                                      const std::vector<std::string> &columns,
                                      const MPI_Comm communicator,

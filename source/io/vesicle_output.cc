@@ -8,6 +8,8 @@
 
 namespace vesicle_iga
 {
+  using namespace dealii;
+
   template <int dim>
   void
   write_vesicle_vtu(const SplineDofHandler<dim>         &dofs,

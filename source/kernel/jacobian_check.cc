@@ -75,14 +75,19 @@ namespace vesicle_iga
         for (const double sign : {1., -1.})
           {
             AssemblyState perturbed = state;
-            perturb(dofs, *state.value, state.value_factor, 1., d, sign * h, value);
+            perturb(
+              dofs, *state.value, state.value_factor, 1., d, sign * h, value);
             perturbed.value = &value;
             if (state.rate)
               {
-                perturb(dofs, *state.rate, state.rate_factor, 0., d, sign * h, rate);
+                perturb(
+                  dofs, *state.rate, state.rate_factor, 0., d, sign * h, rate);
                 perturbed.rate = &rate;
               }
-            assembler.assemble(perturbed, constraints, sign > 0 ? &rp : &rm, nullptr);
+            assembler.assemble(perturbed,
+                               constraints,
+                               sign > 0 ? &rp : &rm,
+                               nullptr);
           }
         rp -= rm;
         rp *= 1. / (2 * h);
@@ -105,20 +110,20 @@ namespace vesicle_iga
       for (unsigned int i = 0; i < dofs.component_space(k).n_basis();
            ++i, ++natural)
         if (d.in_local_range(dofs.dof_index(i, k)))
-          d[dofs.dof_index(i, k)] =
-            std::sin(0.37 * natural) * std::cos(0.11 * natural);
+          d[dofs.dof_index(i, k)]
+            = std::sin(0.37 * natural) * std::cos(0.11 * natural);
     d.compress(VectorOperation::insert);
     constraints.set_zero(d);
     return d;
   }
 
-#define INSTANTIATE(dim)                                                  \
-  template JacobianCheck check_jacobian(const SystemAssembler<dim> &,    \
-                                        const AssemblyState &,           \
-                                        const AffineConstraints<double> &, \
+#define INSTANTIATE(dim)                                                       \
+  template JacobianCheck check_jacobian(const SystemAssembler<dim> &,          \
+                                        const AssemblyState &,                 \
+                                        const AffineConstraints<double> &,     \
                                         const TrilinosWrappers::MPI::Vector &, \
-                                        const std::vector<double> &);    \
-  template TrilinosWrappers::MPI::Vector test_direction(                 \
+                                        const std::vector<double> &);          \
+  template TrilinosWrappers::MPI::Vector test_direction(                       \
     const SplineDofHandler<dim> &, const AffineConstraints<double> &);
   INSTANTIATE(2)
   INSTANTIATE(3)

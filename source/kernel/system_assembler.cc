@@ -60,7 +60,7 @@ namespace vesicle_iga
     /// Residual atoms (plain derivative, residual slot) of one component.
     struct ResidualComponent
     {
-      unsigned int                                     component;
+      unsigned int                                       component;
       std::vector<std::pair<unsigned int, unsigned int>> atoms;
     };
     std::vector<ResidualComponent> residual_components;
@@ -139,7 +139,7 @@ namespace vesicle_iga
     void
     plan_inputs(PlanOf<dim> &plan)
     {
-      using D             = Derivative<dim>;
+      using D                 = Derivative<dim>;
       auto              &decl = plan.declaration;
       const unsigned int n    = decl.inputs.size();
       for (unsigned int s = 0; s < n; ++s)
@@ -147,8 +147,8 @@ namespace vesicle_iga
           const FieldInput in = decl.inputs[s];
           if (in.derivative < D::n_plain)
             continue;
-          std::array<unsigned int, dim> parts;
-          const unsigned int            m = D::expand(in.derivative, parts);
+          std::array<unsigned int, dim>  parts;
+          const unsigned int             m = D::expand(in.derivative, parts);
           typename PlanOf<dim>::Combined c{s, {}};
           for (unsigned int k = 0; k < m; ++k)
             {
@@ -163,8 +163,8 @@ namespace vesicle_iga
           const FieldInput &in = decl.inputs[s];
           if (in.derivative >= D::n_plain)
             continue;
-          plan.max_order =
-            std::max(plan.max_order, D::total_order(in.derivative));
+          plan.max_order
+            = std::max(plan.max_order, D::total_order(in.derivative));
           typename PlanOf<dim>::InputGroup *group = nullptr;
           for (auto &g : plan.groups)
             if (g.source == in.source && g.auxiliary == in.auxiliary
@@ -192,20 +192,21 @@ namespace vesicle_iga
     void
     plan_outputs(PlanOf<dim> &plan)
     {
-      using D           = Derivative<dim>;
-      const auto &decl  = plan.declaration;
-      const auto expand = [](const unsigned int d) {
+      using D            = Derivative<dim>;
+      const auto &decl   = plan.declaration;
+      const auto  expand = [](const unsigned int d) {
         std::array<unsigned int, dim> parts;
         const unsigned int            m = D::expand(d, parts);
         return std::vector<unsigned int>(parts.begin(), parts.begin() + m);
       };
       for (unsigned int s = 0; s < decl.residuals.size(); ++s)
         {
-          const auto &r = decl.residuals[s];
-          auto        it =
-            std::find_if(plan.residual_components.begin(),
-                         plan.residual_components.end(),
-                         [&](const auto &c) { return c.component == r.component; });
+          const auto &r  = decl.residuals[s];
+          auto        it = std::find_if(plan.residual_components.begin(),
+                                 plan.residual_components.end(),
+                                 [&](const auto &c) {
+                                   return c.component == r.component;
+                                 });
           if (it == plan.residual_components.end())
             {
               plan.residual_components.push_back({r.component, {}});
@@ -219,14 +220,14 @@ namespace vesicle_iga
         }
       for (unsigned int s = 0; s < decl.jacobians.size(); ++s)
         {
-          const auto &j  = decl.jacobians[s];
-          auto        it = std::find_if(plan.blocks.begin(),
-                                 plan.blocks.end(),
-                                 [&](const auto &b) {
-                                   return b.test_component == j.test_component
-                                          && b.trial_component
-                                               == j.trial_component;
-                                 });
+          const auto &j = decl.jacobians[s];
+          auto        it
+            = std::find_if(plan.blocks.begin(),
+                           plan.blocks.end(),
+                           [&](const auto &b) {
+                             return b.test_component == j.test_component
+                                    && b.trial_component == j.trial_component;
+                           });
           if (it == plan.blocks.end())
             {
               plan.blocks.push_back({j.test_component, j.trial_component, {}});
@@ -263,14 +264,15 @@ namespace vesicle_iga
     {
       auto plan = std::make_unique<PlanOf<dim>>();
       collect_spaces<dim>(dofs, aux, *plan);
-      plan->terms = terms;
+      plan->terms      = terms;
       auto      &decl  = plan->declaration;
-      const auto merge = [&](const TermDeclaration<dim> &local,
+      const auto merge = [&](const TermDeclaration<dim>      &local,
                              typename PlanOf<dim>::HandleMap &map) {
         for (const auto &in : local.inputs)
           map.inputs.push_back(decl.input(in).index);
         for (const auto &r : local.residuals)
-          map.residuals.push_back(decl.residual(r.component, r.derivative).index);
+          map.residuals.push_back(
+            decl.residual(r.component, r.derivative).index);
         for (const auto &j : local.jacobians)
           map.jacobians.push_back(decl
                                     .jacobian(j.test_component,
@@ -309,8 +311,8 @@ namespace vesicle_iga
               const unsigned int           j,
               const unsigned int           q)
     {
-      using D      = Derivative<dim>;
-      const auto o = D::orders(alpha);
+      using D                       = Derivative<dim>;
+      const auto                  o = D::orders(alpha);
       std::array<unsigned int, 3> k{};
       unsigned int                n = 0;
       for (unsigned int d = 0; d < dim; ++d)
@@ -361,18 +363,18 @@ namespace vesicle_iga
     std::size_t                                  stride = 0;
     std::vector<SplineCellValues<dim>>           cell, face;
     typename TensorProductKernel<dim>::Workspace workspace;
-    std::vector<double> inputs, residuals, jacobians, coefficients, JxW;
-    std::vector<double> local;
+    std::vector<double>         inputs, residuals, jacobians, coefficients, JxW;
+    std::vector<double>         local;
     std::vector<Point<dim>>     points;
     std::vector<Tensor<1, dim>> normals;
     std::vector<Tensor<2, dim>> metrics;
-    std::vector<std::vector<types::global_dof_index>> aux_indices;
-    std::vector<double *>                             out;
+    std::vector<std::vector<types::global_dof_index>>    aux_indices;
+    std::vector<double *>                                out;
     std::vector<typename TensorProductKernel<dim>::Atom> atoms;
     std::vector<typename TensorProductKernel<dim>::Pair> pairs;
-    QuadratureInputs<dim>                                 in;
-    TermCoefficients                                      coefficients_out;
-    unsigned int                                          n_q = 0;
+    QuadratureInputs<dim>                                in;
+    TermCoefficients                                     coefficients_out;
+    unsigned int                                         n_q = 0;
   };
 
 
@@ -385,11 +387,11 @@ namespace vesicle_iga
     /// @p face, or the cell for face < 0).
     template <int dim>
     void
-    reinit_geometry(const PlanOf<dim>         &plan,
-                    ScratchOf<dim>            &s,
-                    const unsigned int         e,
-                    const int                  face,
-                    const bool                 tables)
+    reinit_geometry(const PlanOf<dim> &plan,
+                    ScratchOf<dim>    &s,
+                    const unsigned int e,
+                    const int          face,
+                    const bool         tables)
     {
       auto &values = face < 0 ? s.cell : s.face;
       for (auto &v : values)
@@ -443,14 +445,14 @@ namespace vesicle_iga
     /// Every input of the plan at all points of the current element.
     template <int dim>
     void
-    evaluate_inputs(const PlanOf<dim>                          &plan,
-                    ScratchOf<dim>                             &s,
-                    const AssemblyState                        &state,
-                    const SplineDofHandler<dim>                &dofs,
+    evaluate_inputs(const PlanOf<dim>                                &plan,
+                    ScratchOf<dim>                                   &s,
+                    const AssemblyState                              &state,
+                    const SplineDofHandler<dim>                      &dofs,
                     const std::vector<const SplineDofHandler<dim> *> &aux,
-                    const std::vector<types::global_dof_index> &indices,
-                    const int                                   face,
-                    const bool                                  tables)
+                    const std::vector<types::global_dof_index>       &indices,
+                    const int                                         face,
+                    const bool                                        tables)
     {
       const auto        &values = face < 0 ? s.cell : s.face;
       const unsigned int nq     = s.n_q;
@@ -458,20 +460,20 @@ namespace vesicle_iga
       s.inputs.resize(plan.declaration.inputs.size() * stride);
       for (const auto &g : plan.groups)
         {
-          const TrilinosWrappers::MPI::Vector *v =
-            g.source == FieldSource::value ?
-              state.value :
-              (g.source == FieldSource::rate ? state.rate :
-                                               state.auxiliary[g.auxiliary]);
+          const TrilinosWrappers::MPI::Vector *v
+            = g.source == FieldSource::value ?
+                state.value :
+                (g.source == FieldSource::rate ? state.rate :
+                                                 state.auxiliary[g.auxiliary]);
           AssertThrow(v != nullptr,
                       ExcMessage("A term reads a field the state lacks."));
-          const auto &idx = g.source == FieldSource::auxiliary ?
-                              s.aux_indices[g.auxiliary] :
-                              indices;
-          const unsigned int offset =
-            g.source == FieldSource::auxiliary ?
-              aux[g.auxiliary]->local_offset(g.component) :
-              dofs.local_offset(g.component);
+          const auto        &idx = g.source == FieldSource::auxiliary ?
+                                     s.aux_indices[g.auxiliary] :
+                                     indices;
+          const unsigned int offset
+            = g.source == FieldSource::auxiliary ?
+                aux[g.auxiliary]->local_offset(g.component) :
+                dofs.local_offset(g.component);
           const SplineCellValues<dim> &cv = values[g.space];
           const unsigned int           n  = cv.n_basis_per_element();
           s.local.resize(n);
@@ -504,15 +506,15 @@ namespace vesicle_iga
             for (unsigned int q = 0; q < nq; ++q)
               out[q] += s.inputs[p * stride + q];
         }
-      s.in.data          = s.inputs.data();
-      s.in.stride        = stride;
-      s.in.n_points      = nq;
-      s.in.points        = &s.points;
-      s.in.normals       = &s.normals;
-      s.in.metrics       = &s.metrics;
-      s.in.face_number   = face;
-      s.in.time          = state.time;
-      s.in.time_step     = state.time_step;
+      s.in.data        = s.inputs.data();
+      s.in.stride      = stride;
+      s.in.n_points    = nq;
+      s.in.points      = &s.points;
+      s.in.normals     = &s.normals;
+      s.in.metrics     = &s.metrics;
+      s.in.face_number = face;
+      s.in.time        = state.time;
+      s.in.time_step   = state.time_step;
     }
 
 
@@ -526,10 +528,8 @@ namespace vesicle_iga
     {
       const std::size_t stride = s.in.stride;
       s.residuals.assign(plan.declaration.residuals.size() * stride, 0.);
-      s.jacobians.assign(want_matrix ?
-                           plan.declaration.jacobians.size() * stride :
-                           0,
-                         0.);
+      s.jacobians.assign(
+        want_matrix ? plan.declaration.jacobians.size() * stride : 0, 0.);
       auto &out         = s.coefficients_out;
       out.residual_data = s.residuals.data();
       out.jacobian_data = s.jacobians.data();
@@ -568,8 +568,8 @@ namespace vesicle_iga
           s.residuals[r * stride + q] *= s.JxW[q];
       for (const auto &rc : plan.residual_components)
         {
-          const SplineCellValues<dim> &cv =
-            values[plan.system_space[rc.component]];
+          const SplineCellValues<dim> &cv
+            = values[plan.system_space[rc.component]];
           double *b = &rhs(dofs.local_offset(rc.component));
           if (tables)
             {
@@ -595,17 +595,18 @@ namespace vesicle_iga
     /// (a, b, C) has its partner (b, a, C).
     template <int dim>
     bool
-    symmetric_pairs(const std::vector<typename TensorProductKernel<dim>::Pair> &pairs,
-                    const unsigned int n_q)
+    symmetric_pairs(
+      const std::vector<typename TensorProductKernel<dim>::Pair> &pairs,
+      const unsigned int                                          n_q)
     {
       for (const auto &p : pairs)
         {
           if (p.test == p.trial)
             continue;
-          const auto partner =
-            std::find_if(pairs.begin(), pairs.end(), [&](const auto &o) {
-              return o.test == p.trial && o.trial == p.test;
-            });
+          const auto partner
+            = std::find_if(pairs.begin(), pairs.end(), [&](const auto &o) {
+                return o.test == p.trial && o.trial == p.test;
+              });
           if (partner == pairs.end()
               || !std::equal(p.coefficient,
                              p.coefficient + n_q,
@@ -633,8 +634,8 @@ namespace vesicle_iga
       const std::size_t  stride = s.in.stride;
       s.coefficients.resize(plan.n_pairs * stride);
       const auto factor = [&](const FieldSource src, const unsigned int k) {
-        const auto &f = src == FieldSource::rate ? state.rate_factor :
-                                                   state.value_factor;
+        const auto &f
+          = src == FieldSource::rate ? state.rate_factor : state.value_factor;
         return f.empty() ? (src == FieldSource::rate ? 0. : 1.) : f[k];
       };
       unsigned int next = 0;
@@ -648,8 +649,8 @@ namespace vesicle_iga
               bool any = false;
               for (const auto &contribution : pair.contributions)
                 {
-                  const double w =
-                    factor(contribution.source, block.trial_component);
+                  const double w
+                    = factor(contribution.source, block.trial_component);
                   if (w == 0.)
                     continue;
                   any             = true;
@@ -667,10 +668,10 @@ namespace vesicle_iga
             continue;
           const unsigned int row = dofs.local_offset(block.test_component);
           const unsigned int col = dofs.local_offset(block.trial_component);
-          const SplineCellValues<dim> &vt =
-            values[plan.system_space[block.test_component]];
-          const SplineCellValues<dim> &vs =
-            values[plan.system_space[block.trial_component]];
+          const SplineCellValues<dim> &vt
+            = values[plan.system_space[block.test_component]];
+          const SplineCellValues<dim> &vs
+            = values[plan.system_space[block.trial_component]];
           if (tables)
             {
               for (const auto &p : s.pairs)
@@ -685,9 +686,8 @@ namespace vesicle_iga
                     }
               continue;
             }
-          const bool symmetric =
-            block.test_component == block.trial_component
-            && symmetric_pairs<dim>(s.pairs, nq);
+          const bool symmetric = block.test_component == block.trial_component
+                                 && symmetric_pairs<dim>(s.pairs, nq);
           TensorProductKernel<dim>::integrate_matrix(
             vt.tensor_product_factors(),
             vs.tensor_product_factors(),
@@ -769,8 +769,8 @@ namespace vesicle_iga
   {
     const bool         tables  = bool(geometry);
     const unsigned int n_local = dofs.n_element_dofs();
-    const unsigned int order =
-      std::max({1u, cell_plan->max_order, face_plan->max_order});
+    const unsigned int order
+      = std::max({1u, cell_plan->max_order, face_plan->max_order});
     if (matrix)
       *matrix = 0;
     if (residual)
@@ -778,7 +778,7 @@ namespace vesicle_iga
     const auto &space = dofs.get_space();
 
     const auto worker = [&](const std::vector<unsigned int>::const_iterator &e,
-                            Scratch  &s,
+                            Scratch                                         &s,
                             CopyData &copy) {
       copy.matrix.reinit(matrix ? n_local : 0, matrix ? n_local : 0);
       copy.rhs.reinit(residual ? n_local : 0);
@@ -838,10 +838,11 @@ namespace vesicle_iga
 
   template <int dim>
   std::vector<double>
-  SystemAssembler<dim>::integrate(const std::vector<Integrand<dim> *> &integrands,
-                                  const AssemblyState &state) const
+  SystemAssembler<dim>::integrate(
+    const std::vector<Integrand<dim> *> &integrands,
+    const AssemblyState                 &state) const
   {
-    const auto plan = make_plan<dim>(dofs, auxiliary_dofs, {}, integrands);
+    const auto plan   = make_plan<dim>(dofs, auxiliary_dofs, {}, integrands);
     const bool tables = bool(geometry);
     Scratch    s(plan->spaces,
               geometry,

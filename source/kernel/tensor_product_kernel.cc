@@ -7,6 +7,8 @@
 
 namespace vesicle_iga
 {
+  using namespace dealii;
+
   namespace
   {
     /**
@@ -77,13 +79,13 @@ namespace vesicle_iga
     /// 0..level and accumulates into @p result.
     template <int dim>
     void
-    reduce(const TensorProductFactors<dim>                                &f,
-           const typename TensorProductKernel<dim>::Atom                  *begin,
-           const typename TensorProductKernel<dim>::Atom                  *end,
-           const int                                                       level,
-           std::array<std::vector<double>, dim + 1>                       &stage,
-           std::vector<double>                                            &result,
-           const bool                                                      accumulate)
+    reduce(const TensorProductFactors<dim>               &f,
+           const typename TensorProductKernel<dim>::Atom *begin,
+           const typename TensorProductKernel<dim>::Atom *end,
+           const int                                      level,
+           std::array<std::vector<double>, dim + 1>      &stage,
+           std::vector<double>                           &result,
+           const bool                                     accumulate)
     {
       using D = Derivative<dim>;
       // Extents before contracting direction `level`: points for d >= level,
@@ -166,8 +168,8 @@ namespace vesicle_iga
     previous.fill(~0u);
     for (unsigned int s = 0; s < n; ++s)
       {
-        const unsigned int k = order_of[s];
-        const auto         o = D::orders(derivatives[k]);
+        const unsigned int k     = order_of[s];
+        const auto         o     = D::orders(derivatives[k]);
         unsigned int       start = 0;
         while (start < dim && o[start] == previous[start])
           ++start;
@@ -228,11 +230,11 @@ namespace vesicle_iga
     /// B_d[q][i ns + j] = N^{(oa)}_i(q) M^{(ob)}_j(q) for direction d.
     template <int dim>
     const double *
-    product(const TensorProductFactors<dim>             &test,
-            const TensorProductFactors<dim>             &trial,
-            const unsigned int                           d,
-            const unsigned int                           oa,
-            const unsigned int                           ob,
+    product(const TensorProductFactors<dim>              &test,
+            const TensorProductFactors<dim>              &trial,
+            const unsigned int                            d,
+            const unsigned int                            oa,
+            const unsigned int                            ob,
             typename TensorProductKernel<dim>::Workspace &ws)
     {
       auto              &v   = ws.products[d][oa * 4 + ob];
@@ -240,7 +242,7 @@ namespace vesicle_iga
       if (!(ws.product_valid[d] & bit))
         {
           const unsigned int nt = test.n_basis[d], ns = trial.n_basis[d];
-          const unsigned int m  = test.n_points[d];
+          const unsigned int m = test.n_points[d];
           v.resize(m * nt * ns);
           const double *Ft = test.table(d, oa), *Fs = trial.table(d, ob);
           for (unsigned int q = 0; q < m; ++q)
@@ -274,6 +276,197 @@ namespace vesicle_iga
               t[k] += b[k] * c;
           }
     }
+
+    /// What the stages of a matrix integration share.
+    template <int dim>
+    struct MatrixStage
+    {
+      const TensorProductFactors<dim>              &test, &trial;
+      bool                                          symmetric;
+      double                                       *A;
+      std::size_t                                   row_stride;
+      typename TensorProductKernel<dim>::Workspace &ws;
+    };
+
+
+    /// The last stage, shared by all dim: A[(i0, I), (j0, J)] +=
+    ///   sum_q0 B0[q0][i0 j0] T[q0][index(I, J)], with the outer test and
+    /// trial multi-indices I < nI, J < nJ and T of stride @p stride per q0.
+    template <int dim, typename Index>
+    void
+    last_stage(const MatrixStage<dim>    &m,
+               const double              *B0,
+               const std::vector<double> &T,
+               const unsigned int         nI,
+               const unsigned int         nJ,
+               const std::size_t          stride,
+               const Index               &index)
+    {
+      const unsigned int nt0 = m.test.n_basis[0], ns0 = m.trial.n_basis[0];
+      const unsigned int m0 = m.test.n_points[0], nn0 = nt0 * ns0;
+      AssertIndexRange(nn0, 65);
+      double tmp[64];
+      for (unsigned int I = 0; I < nI; ++I)
+        for (unsigned int J = m.symmetric ? I : 0; J < nJ; ++J)
+          {
+            std::fill(tmp, tmp + nn0, 0.);
+            const std::size_t IJ = index(I, J);
+            for (unsigned int q = 0; q < m0; ++q)
+              {
+                const double t = T[q * stride + IJ];
+                if (t == 0.)
+                  continue;
+                const double *b = B0 + q * nn0;
+                for (unsigned int k = 0; k < nn0; ++k)
+                  tmp[k] += b[k] * t;
+              }
+            for (unsigned int i0 = 0; i0 < nt0; ++i0)
+              {
+                double *row = m.A + (I * nt0 + i0) * m.row_stride + J * ns0;
+                for (unsigned int j0 = 0; j0 < ns0; ++j0)
+                  row[j0] += tmp[i0 * ns0 + j0];
+              }
+            // The block (J, I) of a symmetric matrix is the transpose.
+            if (m.symmetric && J != I)
+              for (unsigned int i0 = 0; i0 < nt0; ++i0)
+                for (unsigned int j0 = 0; j0 < ns0; ++j0)
+                  m.A[(J * nt0 + j0) * m.row_stride + I * ns0 + i0]
+                    += tmp[i0 * ns0 + j0];
+          }
+    }
+
+
+    using Key = std::vector<std::array<unsigned int, 6>>;
+
+    /// 2D: per group of equal orders in direction 0, contract direction 1
+    /// of every pair, then direction 0 once.
+    void
+    matrix_groups(const MatrixStage<2>                            &m,
+                  const std::vector<TensorProductKernel<2>::Pair> &pairs,
+                  const Key                                       &keys)
+    {
+      const unsigned int   nt1 = m.test.n_basis[1], ns1 = m.trial.n_basis[1];
+      const unsigned int   m0 = m.test.n_points[0], m1 = m.test.n_points[1];
+      const unsigned int   nn1 = nt1 * ns1;
+      std::vector<double> &T1  = m.ws.stage[1];
+      for (std::size_t g = 0; g < pairs.size();)
+        {
+          const auto k0 = keys[g];
+          T1.assign(std::size_t(m0) * nn1, 0.);
+          std::size_t e = g;
+          for (; e < pairs.size() && keys[e][0] == k0[0] && keys[e][1] == k0[1];
+               ++e)
+            accumulate_first(
+              product<2>(m.test, m.trial, 1, keys[e][2], keys[e][3], m.ws),
+              pairs[e].coefficient,
+              m1,
+              m0,
+              nn1,
+              T1.data());
+          last_stage(m,
+                     product<2>(m.test, m.trial, 0, k0[0], k0[1], m.ws),
+                     T1,
+                     nt1,
+                     ns1,
+                     nn1,
+                     [ns1](const unsigned int I, const unsigned int J) {
+                       return std::size_t(I) * ns1 + J;
+                     });
+          g = e;
+        }
+    }
+
+
+    /// T2[q0][(i1 ns1 + j1) nn2 + (i2 ns2 + j2)] +=
+    ///   sum_q1 B1[q1][i1 j1] T1[q0 + m0 q1][i2 j2]
+    /// (inner loops over contiguous (i2 j2): vectorised).
+    void
+    accumulate_middle(const double              *B1,
+                      const std::vector<double> &T1,
+                      const unsigned int         m0,
+                      const unsigned int         m1,
+                      const unsigned int         nn1,
+                      const unsigned int         nn2,
+                      std::vector<double>       &T2)
+    {
+      for (unsigned int q0 = 0; q0 < m0; ++q0)
+        for (unsigned int q1 = 0; q1 < m1; ++q1)
+          {
+            const double *t1 = &T1[std::size_t(q0 + m0 * q1) * nn2];
+            const double *b  = B1 + q1 * nn1;
+            double       *t2 = &T2[std::size_t(q0) * nn1 * nn2];
+            for (unsigned int k = 0; k < nn1; ++k)
+              {
+                const double c = b[k];
+                if (c == 0.)
+                  continue;
+                double *row = t2 + k * nn2;
+                for (unsigned int l = 0; l < nn2; ++l)
+                  row[l] += c * t1[l];
+              }
+          }
+    }
+
+
+    /// 3D: per group of equal orders in direction 0, per subgroup of equal
+    /// orders in direction 1, contract direction 2 of every pair, then
+    /// direction 1 once per subgroup and direction 0 once per group.
+    void
+    matrix_groups(const MatrixStage<3>                            &m,
+                  const std::vector<TensorProductKernel<3>::Pair> &pairs,
+                  const Key                                       &keys)
+    {
+      const unsigned int   nt1 = m.test.n_basis[1], ns1 = m.trial.n_basis[1];
+      const unsigned int   nt2 = m.test.n_basis[2], ns2 = m.trial.n_basis[2];
+      const unsigned int   m0 = m.test.n_points[0], m1 = m.test.n_points[1];
+      const unsigned int   m2  = m.test.n_points[2];
+      const unsigned int   nn1 = nt1 * ns1, nn2 = nt2 * ns2;
+      std::vector<double> &T1 = m.ws.stage[1], &T2 = m.ws.stage[2];
+      for (std::size_t g = 0; g < pairs.size();)
+        {
+          const auto k0 = keys[g];
+          T2.assign(std::size_t(m0) * nn1 * nn2, 0.);
+          std::size_t e = g;
+          while (e < pairs.size() && keys[e][0] == k0[0] && keys[e][1] == k0[1])
+            {
+              const auto k1 = keys[e];
+              T1.assign(std::size_t(m0) * m1 * nn2, 0.);
+              std::size_t h = e;
+              for (; h < pairs.size() && keys[h][0] == k0[0]
+                     && keys[h][1] == k0[1] && keys[h][2] == k1[2]
+                     && keys[h][3] == k1[3];
+                   ++h)
+                accumulate_first(
+                  product<3>(m.test, m.trial, 2, keys[h][4], keys[h][5], m.ws),
+                  pairs[h].coefficient,
+                  m2,
+                  m0 * m1,
+                  nn2,
+                  T1.data());
+              accumulate_middle(
+                product<3>(m.test, m.trial, 1, k1[2], k1[3], m.ws),
+                T1,
+                m0,
+                m1,
+                nn1,
+                nn2,
+                T2);
+              e = h;
+            }
+          last_stage(m,
+                     product<3>(m.test, m.trial, 0, k0[0], k0[1], m.ws),
+                     T2,
+                     nt1 * nt2,
+                     ns1 * ns2,
+                     std::size_t(nn1) * nn2,
+                     [=](const unsigned int I, const unsigned int J) {
+                       const unsigned int i1 = I % nt1, i2 = I / nt1;
+                       const unsigned int j1 = J % ns1, j2 = J / ns1;
+                       return std::size_t(i1 * ns1 + j1) * nn2 + i2 * ns2 + j2;
+                     });
+          g = e;
+        }
+    }
   } // namespace
 
 
@@ -292,10 +485,13 @@ namespace vesicle_iga
     if (pairs.empty())
       return;
     ws.product_valid.fill(0);
+    // The orders (test, trial) per direction: pairs are grouped by those of
+    // direction 0, then 1, ..., so that the last contraction (direction 0,
+    // the most expensive) is done once per group.
     const auto key = [](const Pair &p) {
-      std::array<unsigned int, 2 * dim> k;
-      const auto                        a = D::orders(p.test);
-      const auto                        b = D::orders(p.trial);
+      std::array<unsigned int, 6> k{};
+      const auto                  a = D::orders(p.test);
+      const auto                  b = D::orders(p.trial);
       for (unsigned int d = 0; d < dim; ++d)
         {
           k[2 * d]     = a[d];
@@ -303,154 +499,16 @@ namespace vesicle_iga
         }
       return k;
     };
-    // Grouped by the orders of direction 0, then 1, ...: the last
-    // contraction (direction 0, the most expensive) once per group.
     std::sort(pairs.begin(), pairs.end(), [&](const Pair &a, const Pair &b) {
       return key(a) < key(b);
     });
-
-    const unsigned int nt0 = test.n_basis[0], ns0 = trial.n_basis[0];
-    const unsigned int m0 = test.n_points[0], nn0 = nt0 * ns0;
-    AssertIndexRange(nn0, 65);
-    // Last stage, shared by all dim: A[(i0, I), (j0, J)] +=
-    //   sum_q0 B0[q0][i0 j0] T[q0][index(I, J)], with the outer test and
-    //   trial multi-indices I < nI, J < nJ and T of stride @p stride per q0.
-    const auto last_stage = [&](const double              *B0,
-                                const std::vector<double> &T,
-                                const unsigned int         nI,
-                                const unsigned int         nJ,
-                                const std::size_t          stride,
-                                const auto                &index) {
-      double tmp[64];
-      for (unsigned int I = 0; I < nI; ++I)
-        for (unsigned int J = symmetric ? I : 0; J < nJ; ++J)
-          {
-            std::fill(tmp, tmp + nn0, 0.);
-            const std::size_t IJ = index(I, J);
-            for (unsigned int q = 0; q < m0; ++q)
-              {
-                const double t = T[q * stride + IJ];
-                if (t == 0.)
-                  continue;
-                const double *b = B0 + q * nn0;
-                for (unsigned int k = 0; k < nn0; ++k)
-                  tmp[k] += b[k] * t;
-              }
-            for (unsigned int i0 = 0; i0 < nt0; ++i0)
-              {
-                double *row = A + (I * nt0 + i0) * row_stride + J * ns0;
-                for (unsigned int j0 = 0; j0 < ns0; ++j0)
-                  row[j0] += tmp[i0 * ns0 + j0];
-              }
-            // The block (J, I) of a symmetric matrix is the transpose.
-            if (symmetric && J != I)
-              for (unsigned int i0 = 0; i0 < nt0; ++i0)
-                for (unsigned int j0 = 0; j0 < ns0; ++j0)
-                  A[(J * nt0 + j0) * row_stride + I * ns0 + i0]
-                    += tmp[i0 * ns0 + j0];
-          }
-    };
-
-    const unsigned int nt1 = test.n_basis[1], ns1 = trial.n_basis[1];
-    const unsigned int m1 = test.n_points[1], nn1 = nt1 * ns1;
-    if constexpr (dim == 2)
-      {
-        std::vector<double> &T1 = ws.stage[1];
-        for (std::size_t g = 0; g < pairs.size();)
-          {
-            const auto k0 = key(pairs[g]);
-            T1.assign(std::size_t(m0) * nn1, 0.);
-            std::size_t e = g;
-            for (; e < pairs.size() && key(pairs[e])[0] == k0[0]
-                   && key(pairs[e])[1] == k0[1];
-                 ++e)
-              {
-                const auto k = key(pairs[e]);
-                accumulate_first(product<dim>(test, trial, 1, k[2], k[3], ws),
-                                 pairs[e].coefficient,
-                                 m1,
-                                 m0,
-                                 nn1,
-                                 T1.data());
-              }
-            last_stage(product<dim>(test, trial, 0, k0[0], k0[1], ws),
-                       T1,
-                       nt1,
-                       ns1,
-                       nn1,
-                       [ns1](const unsigned int I, const unsigned int J) {
-                         return std::size_t(I) * ns1 + J;
-                       });
-            g = e;
-          }
-      }
-    else
-      {
-        const unsigned int nt2 = test.n_basis[2], ns2 = trial.n_basis[2];
-        const unsigned int m2 = test.n_points[2], nn2 = nt2 * ns2;
-        std::vector<double> &T1 = ws.stage[1], &T2 = ws.stage[2];
-        for (std::size_t g = 0; g < pairs.size();)
-          {
-            const auto k0 = key(pairs[g]);
-            T2.assign(std::size_t(m0) * nn1 * nn2, 0.);
-            std::size_t e = g;
-            while (e < pairs.size() && key(pairs[e])[0] == k0[0]
-                   && key(pairs[e])[1] == k0[1])
-              {
-                const auto k1 = key(pairs[e]);
-                T1.assign(std::size_t(m0) * m1 * nn2, 0.);
-                std::size_t h = e;
-                for (; h < pairs.size() && key(pairs[h])[0] == k0[0]
-                       && key(pairs[h])[1] == k0[1]
-                       && key(pairs[h])[2] == k1[2]
-                       && key(pairs[h])[3] == k1[3];
-                     ++h)
-                  {
-                    const auto k = key(pairs[h]);
-                    accumulate_first(
-                      product<dim>(test, trial, 2, k[4], k[5], ws),
-                      pairs[h].coefficient,
-                      m2,
-                      m0 * m1,
-                      nn2,
-                      T1.data());
-                  }
-                // T2[q0][(i1 ns1 + j1) nn2 + (i2 ns2 + j2)] +=
-                //   sum_q1 B1[q1][i1 j1] T1[q0 + m0 q1][i2 j2]
-                // (inner loops over contiguous (i2 j2): vectorised).
-                const double *B1 = product<dim>(test, trial, 1, k1[2], k1[3], ws);
-                for (unsigned int q0 = 0; q0 < m0; ++q0)
-                  for (unsigned int q1 = 0; q1 < m1; ++q1)
-                    {
-                      const double *t1 = &T1[std::size_t(q0 + m0 * q1) * nn2];
-                      const double *b  = B1 + q1 * nn1;
-                      double       *t2 = &T2[std::size_t(q0) * nn1 * nn2];
-                      for (unsigned int k = 0; k < nn1; ++k)
-                        {
-                          const double c = b[k];
-                          if (c == 0.)
-                            continue;
-                          double *row = t2 + k * nn2;
-                          for (unsigned int l = 0; l < nn2; ++l)
-                            row[l] += c * t1[l];
-                        }
-                    }
-                e = h;
-              }
-            last_stage(product<dim>(test, trial, 0, k0[0], k0[1], ws),
-                       T2,
-                       nt1 * nt2,
-                       ns1 * ns2,
-                       std::size_t(nn1) * nn2,
-                       [=](const unsigned int I, const unsigned int J) {
-                         const unsigned int i1 = I % nt1, i2 = I / nt1;
-                         const unsigned int j1 = J % ns1, j2 = J / ns1;
-                         return std::size_t(i1 * ns1 + j1) * nn2 + i2 * ns2
-                                + j2;
-                       });
-            g = e;
-          }
-      }
+    thread_local Key keys;
+    keys.resize(pairs.size());
+    for (std::size_t k = 0; k < pairs.size(); ++k)
+      keys[k] = key(pairs[k]);
+    matrix_groups(MatrixStage<dim>{test, trial, symmetric, A, row_stride, ws},
+                  pairs,
+                  keys);
   }
 
   template class TensorProductKernel<2>;

@@ -2,6 +2,8 @@
 
 namespace vesicle_iga
 {
+  using namespace dealii;
+
   template <int dim>
   InputHandle
   TermDeclaration<dim>::input(const FieldInput &in)

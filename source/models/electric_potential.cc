@@ -49,11 +49,9 @@ namespace vesicle_iga
     dofs.make_sparsity_pattern(sparsity);
     linear = std::make_unique<JacobianSolver>(solver, homogeneous, sparsity);
     if (solver.uses_multigrid())
-      linear->set_preconditioner(
-        std::make_unique<SplineMultigrid<dim>>(dofs,
-                                               homogeneous,
-                                               solver.multigrid),
-        JacobianSolver::Reuse::every_matrix);
+      linear->set_preconditioner(std::make_unique<SplineMultigrid<dim>>(
+                                   dofs, homogeneous, solver.multigrid),
+                                 JacobianSolver::Reuse::every_matrix);
     const MPI_Comm comm = dofs.get_mesh().get_communicator();
     psi.reinit(dofs.locally_owned_dofs(), comm);
     ghosted_psi.reinit(dofs.locally_owned_dofs(),
@@ -82,7 +80,8 @@ namespace vesicle_iga
 
   template <int dim>
   LinearSolveResult
-  ElectricPotential<dim>::solve(const TrilinosWrappers::MPI::Vector &ghosted_phi)
+  ElectricPotential<dim>::solve(
+    const TrilinosWrappers::MPI::Vector &ghosted_phi)
   {
     TimerOutput::Scope t(timer, "potential");
     phi = &ghosted_phi;

@@ -43,7 +43,7 @@ namespace vesicle_iga
       {
         for (unsigned int a = 0; a < dim; ++a)
           {
-            u[a]   = d.value(a, Derivative<dim>::value);
+            u[a]  = d.value(a, Derivative<dim>::value);
             du[a] = d.value(a, Derivative<dim>::gradient(a));
           }
       }
@@ -210,9 +210,8 @@ namespace vesicle_iga
   void
   IncompressibleFlow<dim>::setup_block_preconditioner()
   {
-    const auto &block = parameters.solver.block;
-    auto        preconditioner =
-      std::make_unique<FlowBlockPreconditioner>(dim, block);
+    const auto &block   = parameters.solver.block;
+    auto preconditioner = std::make_unique<FlowBlockPreconditioner>(dim, block);
     if (block.velocity_preconditioner == "spline-multigrid")
       {
         // Velocity block row of (basis i, component c): new_index(i) dim +
@@ -244,16 +243,16 @@ namespace vesicle_iga
     std::function<void()>    lumped_operators;
     if (block.schur_approximation == "cahouet-chabard")
       {
-        schur_assembler =
-          std::make_unique<SystemAssembler<dim>>(dof_handler,
-                                                 assembler.get_quadrature());
+        schur_assembler
+          = std::make_unique<SystemAssembler<dim>>(dof_handler,
+                                                   assembler.get_quadrature());
         schur_assembler->add_term(lumped_schur);
         // At the state of the Jacobian just assembled.
         lumped_operators = [this, blocks]() {
           const AssemblyState &state = stepper->stage();
           lumped_schur.set_factors(state.rate_factor[0],
                                    state.value_factor[dim]);
-          TrilinosWrappers::MPI::Vector   lumped(dof_handler.locally_owned_dofs(),
+          TrilinosWrappers::MPI::Vector lumped(dof_handler.locally_owned_dofs(),
                                                comm);
           const AffineConstraints<double> none;
           schur_assembler->assemble(state, none, &lumped, nullptr);
@@ -345,8 +344,8 @@ namespace vesicle_iga
     // so subtracting m from every pressure coefficient subtracts m.
     PressureMean<dim> mean;
     AssemblyState     state;
-    state.value       = &ghosted_solution;
-    const auto sums   = assembler.integrate({&mean}, state);
+    state.value                        = &ghosted_solution;
+    const auto                    sums = assembler.integrate({&mean}, state);
     TrilinosWrappers::MPI::Vector shifted(stepper->solution());
     for (const auto i : dof_handler.locally_owned_dofs())
       if (i % (dim + 1) == dim)

@@ -46,7 +46,11 @@ namespace vesicle_iga
         assembler.add_auxiliary_field(dofs);
         if (m.flexoelectric)
           electric_terms.push_back(std::make_unique<FlexoelectricEnergy<dim>>(
-            0, 0, m.flexoelectric_coefficient(), m.membrane_thickness(), p.epsilon));
+            0,
+            0,
+            m.flexoelectric_coefficient(),
+            m.membrane_thickness(),
+            p.epsilon));
         if (m.membrane_dielectric)
           electric_terms.push_back(
             std::make_unique<MembraneDielectricEnergy<dim>>(
@@ -169,7 +173,8 @@ namespace vesicle_iga
 
   template <int dim>
   void
-  PhaseFieldFlow<dim>::set_initial_state(const TrilinosWrappers::MPI::Vector &phi0)
+  PhaseFieldFlow<dim>::set_initial_state(
+    const TrilinosWrappers::MPI::Vector &phi0)
   {
     stepper->set_initial_state(phi0, 0.);
     solve_potential(phi0);
@@ -185,22 +190,24 @@ namespace vesicle_iga
   StepReport
   PhaseFieldFlow<dim>::solve_step(const double dt)
   {
-    alm_alpha   = alm.alpha();
-    alm_beta    = alm.beta();
-    alm_inverse = alm.inverse_jacobian();
+    alm_alpha         = alm.alpha();
+    alm_beta          = alm.beta();
+    alm_inverse       = alm.inverse_jacobian();
     StepReport report = constrained_step(dt);
     // Fixed-point coupling (spec 3.9 option): psi from phi_{n+1}, and the
     // step again from phi_n, until psi settles.
     unsigned int fixed_point_iterations = 0;
     while (electric && parameters.coupling == "fixed-point")
       {
-        const TrilinosWrappers::MPI::Vector psi_old(electric->owned_potential());
+        const TrilinosWrappers::MPI::Vector psi_old(
+          electric->owned_potential());
         solve_potential(stepper->next_solution());
         TrilinosWrappers::MPI::Vector change(psi_old);
         change -= electric->owned_potential();
         if (change.l2_norm() <= parameters.fixed_point_tolerance
                                   * electric->owned_potential().l2_norm()
-            || ++fixed_point_iterations >= parameters.max_fixed_point_iterations)
+            || ++fixed_point_iterations
+                 >= parameters.max_fixed_point_iterations)
           break;
         alm.set_state(alm_alpha, alm_beta, alm_inverse);
         const StepReport again = constrained_step(dt);
@@ -217,7 +224,7 @@ namespace vesicle_iga
   PhaseFieldFlow<dim>::constrained_step(const double dt)
   {
     StepReport report;
-    report.counters = {0.};
+    report.counters         = {0.};
     const auto newton_solve = [&]() {
       const NewtonReport r = stepper->solve_step(newton, dt);
       report.newton_iterations += r.iterations;
@@ -257,10 +264,9 @@ namespace vesicle_iga
     if (!r.converged)
       {
         std::ostringstream s;
-        s << "modified ALM: the constraints are not met after "
-          << r.iterations << " iterations (|V/V0 - 1| = "
-          << std::abs(r.volume / V0 - 1) << ", |A/A0 - 1| = "
-          << std::abs(r.area / A0 - 1) << ", tolerance "
+        s << "modified ALM: the constraints are not met after " << r.iterations
+          << " iterations (|V/V0 - 1| = " << std::abs(r.volume / V0 - 1)
+          << ", |A/A0 - 1| = " << std::abs(r.area / A0 - 1) << ", tolerance "
           << parameters.constraint_tolerance << ")";
         throw SolverFailure(s.str());
       }
@@ -288,7 +294,7 @@ namespace vesicle_iga
     AssemblyState state;
     state.value = &ghost(stepper->next_solution());
     std::vector<TrilinosWrappers::MPI::Vector> g(2), x(2);
-    Term<dim> *const                           terms[2] = {&unit_volume, &unit_area};
+    Term<dim> *const terms[2] = {&unit_volume, &unit_area};
     for (unsigned int k = 0; k < 2; ++k)
       {
         SystemAssembler<dim> gradient(dofs, assembler.get_quadrature());
@@ -375,8 +381,8 @@ namespace vesicle_iga
               {
                 sum[1 + i] += rq * in[g[i]][q] * JxW[q];
                 for (unsigned int j = 0; j < dim; ++j)
-                  sum[1 + dim + dim * i + j] +=
-                    in[g[i]][q] * in[g[j]][q] * JxW[q];
+                  sum[1 + dim + dim * i + j]
+                    += in[g[i]][q] * in[g[j]][q] * JxW[q];
               }
           }
       }
@@ -404,8 +410,8 @@ namespace vesicle_iga
     ghosted_change = change;
     InterfaceMotionSums<dim> sums_of;
     AssemblyState            state;
-    state.value     = &ghost(solution());
-    state.rate      = &ghosted_change;
+    state.value         = &ghost(solution());
+    state.rate          = &ghosted_change;
     const auto     sums = assembler.integrate({&sums_of}, state);
     Tensor<2, dim> M;
     Tensor<1, dim> b;
@@ -446,12 +452,12 @@ namespace vesicle_iga
       state.auxiliary = {&electric->potential()};
     state.value_factor = {ga.alpha_f * ga.gamma};
     state.rate_factor  = {ga.alpha_m};
-    const auto result  = vesicle_iga::check_jacobian(
-      assembler,
-      state,
-      increment_constraints,
-      test_direction(dofs, increment_constraints),
-      {1e-2, 1e-3, 1e-4});
+    const auto result
+      = vesicle_iga::check_jacobian(assembler,
+                                    state,
+                                    increment_constraints,
+                                    test_direction(dofs, increment_constraints),
+                                    {1e-2, 1e-3, 1e-4});
     out << "Jacobian check: |alpha_f gamma dt DR d| / |K d| = "
         << std::setprecision(3) << result.norm_value_part / result.norm_Kd
         << std::setprecision(6) << std::endl
@@ -460,10 +466,10 @@ namespace vesicle_iga
         << std::endl;
     const std::vector<double> steps = {1e-2, 1e-3, 1e-4};
     for (unsigned int k = 0; k < steps.size(); ++k)
-      out << "  h = " << steps[k] << ": |FD - K d| / |K d| = "
-          << std::scientific << std::setprecision(1)
-          << result.relative_difference[k] << std::defaultfloat
-          << std::setprecision(6) << std::endl;
+      out << "  h = " << steps[k]
+          << ": |FD - K d| / |K d| = " << std::scientific
+          << std::setprecision(1) << result.relative_difference[k]
+          << std::defaultfloat << std::setprecision(6) << std::endl;
     area.set_multiplier(0);
     volume.set_multiplier(0);
   }

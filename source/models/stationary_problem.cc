@@ -71,14 +71,12 @@ namespace vesicle_iga
       assembler->add_term(*t);
     TrilinosWrappers::SparsityPattern sparsity;
     dof_handler.make_sparsity_pattern(sparsity);
-    linear =
-      std::make_unique<JacobianSolver>(solver, increments, sparsity, timer);
+    linear
+      = std::make_unique<JacobianSolver>(solver, increments, sparsity, timer);
     if (solver.uses_multigrid())
-      linear->set_preconditioner(
-        std::make_unique<SplineMultigrid<dim>>(dof_handler,
-                                               increments,
-                                               solver.multigrid),
-        JacobianSolver::Reuse::every_matrix);
+      linear->set_preconditioner(std::make_unique<SplineMultigrid<dim>>(
+                                   dof_handler, increments, solver.multigrid),
+                                 JacobianSolver::Reuse::every_matrix);
     ghosted_solution.reinit(dof_handler.locally_owned_dofs(),
                             dof_handler.locally_relevant_dofs(),
                             comm);

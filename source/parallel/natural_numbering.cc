@@ -4,6 +4,8 @@
 
 namespace vesicle_iga
 {
+  using namespace dealii;
+
   template <int dim>
   void
   scatter_natural(const SplineDofHandler<dim>   &dofs,

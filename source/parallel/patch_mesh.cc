@@ -5,6 +5,8 @@
 
 namespace vesicle_iga
 {
+  using namespace dealii;
+
   template <int dim>
   PatchMesh<dim>::PatchMesh(const MPI_Comm                            comm,
                             const SplineSpace<dim>                   &space,

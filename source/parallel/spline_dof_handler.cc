@@ -60,8 +60,8 @@ namespace vesicle_iga
         owner[s].resize(space.n_basis());
         for (unsigned int i = 0; i < space.n_basis(); ++i)
           {
-            owner[s][i] =
-              mesh.element_owner(space.find_element(space.greville_point(i)));
+            owner[s][i]
+              = mesh.element_owner(space.find_element(space.greville_point(i)));
             count[owner[s][i] * n_s + s] += spaces[s].n_components;
           }
       }

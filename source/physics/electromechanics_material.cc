@@ -3,6 +3,8 @@
 
 namespace vesicle_iga
 {
+  using namespace dealii;
+
   void
   ElectromechanicsMaterial::declare(ParameterHandler &prm)
   {

@@ -5,6 +5,8 @@
 
 namespace vesicle_iga
 {
+  using namespace dealii;
+
   template <int dim>
   double
   signed_distance_to_ellipsoid(const Point<dim>              &y_in,

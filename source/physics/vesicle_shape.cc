@@ -7,6 +7,8 @@
 
 namespace vesicle_iga
 {
+  using namespace dealii;
+
   template <int dim>
   void
   VesicleShape<dim>::declare(ParameterHandler &prm)

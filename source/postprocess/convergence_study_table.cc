@@ -6,6 +6,8 @@
 
 namespace vesicle_iga
 {
+  using namespace dealii;
+
   ConvergenceStudyTable::ConvergenceStudyTable(
     const unsigned int              dim,
     const std::vector<std::string> &norm_names)

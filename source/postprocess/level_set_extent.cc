@@ -2,6 +2,8 @@
 
 namespace vesicle_iga
 {
+  using namespace dealii;
+
   template <int dim>
   std::vector<double>
   zero_crossings_along_axis(const SplineSpace<dim>    &space,

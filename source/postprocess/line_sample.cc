@@ -12,6 +12,8 @@
 
 namespace vesicle_iga
 {
+  using namespace dealii;
+
   void
   LineSample::declare(ParameterHandler &prm, const std::string &field_names)
   {

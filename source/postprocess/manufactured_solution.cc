@@ -6,6 +6,8 @@
 
 namespace vesicle_iga
 {
+  using namespace dealii;
+
   template <int dim>
   double
   ProductSineSolution<dim>::value(const Point<dim> &x, const unsigned int) const

@@ -13,6 +13,8 @@
 
 namespace vesicle_iga
 {
+  using namespace dealii;
+
   namespace
   {
     using Row = std::vector<std::pair<types::global_dof_index, double>>;

@@ -11,6 +11,8 @@
 
 namespace vesicle_iga
 {
+  using namespace dealii;
+
   namespace
   {
     /// The Krylov entries every "Linear solver" subsection has.

@@ -4,6 +4,8 @@
 
 namespace vesicle_iga
 {
+  using namespace dealii;
+
   ModifiedALM::ModifiedALM(const double       V0,
                            const double       A0,
                            const double       tolerance,

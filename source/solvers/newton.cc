@@ -58,8 +58,8 @@ namespace vesicle_iga
     {
       std::ostringstream s;
       s << "Newton: " << what << " (residual " << r.residual
-        << ", initial residual " << r.initial_residual << ", "
-        << r.iterations << " corrections)";
+        << ", initial residual " << r.initial_residual << ", " << r.iterations
+        << " corrections)";
       return s.str();
     }
   } // namespace
@@ -82,9 +82,9 @@ namespace vesicle_iga
           report.initial_residual = report.residual;
         if (!std::isfinite(report.residual))
           throw SolverFailure(describe("the residual is not finite", report));
-        if (report.residual
-            <= std::max(parameters.absolute_tolerance,
-                        parameters.relative_tolerance * report.initial_residual))
+        if (report.residual <= std::max(parameters.absolute_tolerance,
+                                        parameters.relative_tolerance
+                                          * report.initial_residual))
           return report;
         if (it == parameters.max_iterations)
           throw SolverFailure(describe("no convergence", report));
@@ -95,7 +95,7 @@ namespace vesicle_iga
             jacobian_age = 0;
           }
         residual *= -1.;
-        increment = 0;
+        increment                 = 0;
         const LinearSolveResult r = linear.solve(increment, residual);
         report.krylov_iterations += r.iterations;
         report.linear_residual = r.residual;
@@ -117,7 +117,7 @@ namespace vesicle_iga
     linear.matrix_changed(true);
     report.initial_residual = residual.l2_norm();
     residual *= -1.;
-    increment                = 0;
+    increment                 = 0;
     const LinearSolveResult r = linear.solve(increment, residual);
     report.krylov_iterations  = r.iterations;
     report.linear_residual    = r.residual;

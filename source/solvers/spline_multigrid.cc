@@ -11,6 +11,8 @@
 
 namespace vesicle_iga
 {
+  using namespace dealii;
+
   void
   SplineMultigridParameters::declare(ParameterHandler  &prm,
                                      const std::string &default_smoother,

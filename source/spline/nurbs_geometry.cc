@@ -5,6 +5,8 @@
 
 namespace vesicle_iga
 {
+  using namespace dealii;
+
   template <int dim>
   NurbsGeometry<dim>::NurbsGeometry(const SplineSpace<dim>        &space,
                                     const std::vector<Point<dim>> &cp,

@@ -6,6 +6,8 @@
 
 namespace vesicle_iga
 {
+  using namespace dealii;
+
   template <int dim>
   SplineCellValues<dim>::SplineCellValues(
     const SplineSpace<dim>                   &space_,
@@ -127,19 +129,14 @@ namespace vesicle_iga
 
   template <int dim>
   void
-  SplineCellValues<dim>::compute(
-    const unsigned int                                  element,
+  SplineCellValues<dim>::compute_univariate(
     const std::array<const BernsteinTable *, dim>      &tab,
     const std::array<const std::vector<double> *, dim> &wts,
     const int                                           face)
   {
-    current_element = element;
-    space.element_basis_indices(element, indices);
-    const auto           em    = space.element_multi_index(element);
-    const Tensor<1, dim> h     = space.element_lengths(element);
-    const Point<dim>     lower = space.element_lower_corner(element);
-
-    // Univariate B-spline derivatives on the element: N = C B / h^r.
+    const auto           em    = space.element_multi_index(current_element);
+    const Tensor<1, dim> h     = space.element_lengths(current_element);
+    const Point<dim>     lower = space.element_lower_corner(current_element);
     std::array<unsigned int, dim>        &np = univariate.n_basis;
     std::array<unsigned int, dim>        &nq = univariate.n_points;
     std::array<std::vector<double>, dim> &N  = univariate.shape;
@@ -172,10 +169,218 @@ namespace vesicle_iga
             univariate.points[d][q] = lower[d] + h[d] * tab[d]->points[q];
           }
       }
+  }
+
+
+  template <int dim>
+  void
+  SplineCellValues<dim>::parametric_derivatives(
+    const std::array<unsigned int, dim> &qm)
+  {
+    // The derivative of multi-order (r_1..r_d) is prod_d N_d^{(r_d)}.
+    const auto &np = univariate.n_basis;
+    const auto &nq = univariate.n_points;
+    const auto &N  = univariate.shape;
+    for (unsigned int j = 0; j < n_local; ++j)
+      {
+        std::array<const double *, dim> f;
+        unsigned int                    rj = j;
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            f[d] = &N[d][qm[d] * np[d] + rj % np[d]];
+            rj /= np[d];
+          }
+        const auto D = [&](const std::array<unsigned int, dim> &r) {
+          double s = 1;
+          for (unsigned int d = 0; d < dim; ++d)
+            s *= *(f[d] + r[d] * nq[d] * np[d]);
+          return s;
+        };
+        std::array<unsigned int, dim> r{};
+        v[j] = D(r);
+        for (unsigned int a = 0; a < dim && order >= 1; ++a)
+          {
+            ++r[a];
+            g[j][a] = D(r);
+            for (unsigned int b = a; b < dim && order >= 2; ++b)
+              {
+                ++r[b];
+                H[j][a][b] = H[j][b][a] = D(r);
+                for (unsigned int c = b; c < dim && order >= 3; ++c)
+                  {
+                    ++r[c];
+                    const double t = D(r);
+                    T[j][a][b][c] = T[j][a][c][b] = T[j][b][a][c]
+                      = T[j][b][c][a] = T[j][c][a][b] = T[j][c][b][a] = t;
+                    --r[c];
+                  }
+                --r[b];
+              }
+            --r[a];
+          }
+      }
+  }
+
+
+  template <int dim>
+  void
+  SplineCellValues<dim>::apply_weights()
+  {
+    double         W = 0;
+    Tensor<1, dim> Wg;
+    Tensor<2, dim> WH;
+    Tensor<3, dim> WT;
+    for (unsigned int j = 0; j < n_local; ++j)
+      {
+        const double wj = geometry->weight(indices[j]);
+        v[j] *= wj;
+        g[j] *= wj;
+        H[j] *= wj;
+        T[j] *= wj;
+        W += v[j];
+        Wg += g[j];
+        WH += H[j];
+        WT += T[j];
+      }
+    for (unsigned int j = 0; j < n_local; ++j)
+      {
+        const double   R = v[j] / W;
+        Tensor<1, dim> Rg;
+        Tensor<2, dim> RH;
+        Tensor<3, dim> RT;
+        for (unsigned int a = 0; a < dim; ++a)
+          Rg[a] = (g[j][a] - R * Wg[a]) / W;
+        if (order >= 2)
+          for (unsigned int a = 0; a < dim; ++a)
+            for (unsigned int b = 0; b < dim; ++b)
+              RH[a][b]
+                = (H[j][a][b] - Rg[a] * Wg[b] - Rg[b] * Wg[a] - R * WH[a][b])
+                  / W;
+        if (order >= 3)
+          for (unsigned int a = 0; a < dim; ++a)
+            for (unsigned int b = 0; b < dim; ++b)
+              for (unsigned int c = 0; c < dim; ++c)
+                RT[a][b][c]
+                  = (T[j][a][b][c] - RH[a][b] * Wg[c] - RH[a][c] * Wg[b]
+                     - RH[b][c] * Wg[a] - Rg[a] * WH[b][c] - Rg[b] * WH[a][c]
+                     - Rg[c] * WH[a][b] - R * WT[a][b][c])
+                    / W;
+        v[j] = R;
+        g[j] = Rg;
+        H[j] = RH;
+        T[j] = RT;
+      }
+  }
+
+
+  template <int dim>
+  double
+  SplineCellValues<dim>::map_to_physical(const unsigned int q,
+                                         Tensor<2, dim>    &Jinv)
+  {
+    // The geometry map and its derivatives: x = sum_j R_j P_j.
+    Point<dim>     x;
+    Tensor<2, dim> J;
+    Tensor<3, dim> X2; // X2[i][a][b] = d^2 x_i / dxi_a dxi_b
+    Tensor<4, dim> X3;
+    for (unsigned int j = 0; j < n_local; ++j)
+      {
+        const Point<dim> &P = geometry->control_point(indices[j]);
+        for (unsigned int i = 0; i < dim; ++i)
+          {
+            x[i] += v[j] * P[i];
+            for (unsigned int a = 0; a < dim; ++a)
+              {
+                J[i][a] += g[j][a] * P[i];
+                for (unsigned int b = 0; b < dim && order >= 2; ++b)
+                  {
+                    X2[i][a][b] += H[j][a][b] * P[i];
+                    for (unsigned int c = 0; c < dim && order >= 3; ++c)
+                      X3[i][a][b][c] += T[j][a][b][c] * P[i];
+                  }
+              }
+          }
+      }
+    points[q] = x;
+    Jinv      = invert(J); // Jinv[a][i] = dxi_a/dx_i
+    // Chain rule (doc/splines.md): with g_i, H_ij, T_ijk the physical
+    // derivatives,
+    //   R_a   = g_i J_ia
+    //   R_ab  = H_ij J_ia J_jb + g_i X2_iab
+    //   R_abc = T_ijk J_ia J_jb J_kc
+    //         + H_ij (X2_iac J_jb + J_ia X2_jbc + X2_iab J_jc) + g_i X3_iabc
+    for (unsigned int j = 0; j < n_local; ++j)
+      {
+        values[q * n_local + j] = v[j];
+        Tensor<1, dim> gp;
+        for (unsigned int i = 0; i < dim; ++i)
+          for (unsigned int a = 0; a < dim; ++a)
+            gp[i] += g[j][a] * Jinv[a][i];
+        grads[q * n_local + j] = gp;
+        if (order < 2)
+          continue;
+        Tensor<2, dim> Hr; // reduced parametric
+        for (unsigned int a = 0; a < dim; ++a)
+          for (unsigned int b = 0; b < dim; ++b)
+            {
+              Hr[a][b] = H[j][a][b];
+              for (unsigned int i = 0; i < dim; ++i)
+                Hr[a][b] -= gp[i] * X2[i][a][b];
+            }
+        const Tensor<2, dim> Hp   = transpose(Jinv) * Hr * Jinv;
+        hessians[q * n_local + j] = Hp;
+        if (order < 3)
+          continue;
+        Tensor<3, dim> Tr, Tp;
+        for (unsigned int a = 0; a < dim; ++a)
+          for (unsigned int b = 0; b < dim; ++b)
+            for (unsigned int c = 0; c < dim; ++c)
+              {
+                double s = T[j][a][b][c];
+                for (unsigned int i = 0; i < dim; ++i)
+                  {
+                    s -= gp[i] * X3[i][a][b][c];
+                    for (unsigned int k = 0; k < dim; ++k)
+                      s -= Hp[i][k]
+                           * (X2[i][a][c] * J[k][b] + J[i][a] * X2[k][b][c]
+                              + X2[i][a][b] * J[k][c]);
+                  }
+                Tr[a][b][c] = s;
+              }
+        for (unsigned int i = 0; i < dim; ++i)
+          for (unsigned int k = 0; k < dim; ++k)
+            for (unsigned int l = 0; l < dim; ++l)
+              {
+                double s = 0;
+                for (unsigned int a = 0; a < dim; ++a)
+                  for (unsigned int b = 0; b < dim; ++b)
+                    for (unsigned int c = 0; c < dim; ++c)
+                      s += Tr[a][b][c] * Jinv[a][i] * Jinv[b][k] * Jinv[c][l];
+                Tp[i][k][l] = s;
+              }
+        thirds[q * n_local + j] = Tp;
+      }
+    return determinant(J);
+  }
+
+
+  template <int dim>
+  void
+  SplineCellValues<dim>::compute(
+    const unsigned int                                  element,
+    const std::array<const BernsteinTable *, dim>      &tab,
+    const std::array<const std::vector<double> *, dim> &wts,
+    const int                                           face)
+  {
+    current_element = element;
+    space.element_basis_indices(element, indices);
+    compute_univariate(tab, wts, face);
+    const auto          &nq = univariate.n_points;
+    const Tensor<1, dim> h  = space.element_lengths(element);
+    jxw.resize(n_q);
     if (!shape_tables)
       {
         // Only the univariate factors and the weights are wanted.
-        jxw.resize(n_q);
         for (unsigned int q = 0; q < n_q; ++q)
           {
             unsigned int rq = q;
@@ -191,22 +396,17 @@ namespace vesicle_iga
       }
 
     values.resize(n_q * n_local);
-    if (order >= 1)
-      grads.resize(n_q * n_local);
-    if (order >= 2)
-      hessians.resize(n_q * n_local);
-    if (order >= 3)
-      thirds.resize(n_q * n_local);
-    jxw.resize(n_q);
+    grads.resize(order >= 1 ? n_q * n_local : 0);
+    hessians.resize(order >= 2 ? n_q * n_local : 0);
+    thirds.resize(order >= 3 ? n_q * n_local : 0);
     points.resize(n_q);
     xi.resize(n_q);
     normals.resize(n_q);
     metric.resize(n_q);
-
-    std::vector<double>         v(n_local);
-    std::vector<Tensor<1, dim>> g(n_local);
-    std::vector<Tensor<2, dim>> H(n_local);
-    std::vector<Tensor<3, dim>> T(n_local);
+    v.resize(n_local);
+    g.resize(n_local);
+    H.resize(n_local);
+    T.resize(n_local);
 
     for (unsigned int q = 0; q < n_q; ++q)
       {
@@ -217,53 +417,12 @@ namespace vesicle_iga
           {
             qm[d] = rq % nq[d];
             rq /= nq[d];
-            xi[q][d] = lower[d] + h[d] * tab[d]->points[qm[d]];
-            w *= (*wts[d])[qm[d]]
-                 * (int(d) == face / 2 && face >= 0 ? 1. : h[d]);
+            xi[q][d] = univariate.points[d][qm[d]];
+            w *= univariate.weights[d][qm[d]];
           }
+        parametric_derivatives(qm);
 
-        // Parametric derivatives of the tensor-product B-splines: the
-        // derivative of multi-order (r_1..r_d) is prod_d N_d^{(r_d)}.
-        for (unsigned int j = 0; j < n_local; ++j)
-          {
-            std::array<const double *, dim> f;
-            unsigned int                    rj = j;
-            for (unsigned int d = 0; d < dim; ++d)
-              {
-                f[d] = &N[d][qm[d] * np[d] + rj % np[d]];
-                rj /= np[d];
-              }
-            const auto D = [&](const std::array<unsigned int, dim> &r) {
-              double s = 1;
-              for (unsigned int d = 0; d < dim; ++d)
-                s *= *(f[d] + r[d] * nq[d] * np[d]);
-              return s;
-            };
-            std::array<unsigned int, dim> r{};
-            v[j] = D(r);
-            for (unsigned int a = 0; a < dim && order >= 1; ++a)
-              {
-                ++r[a];
-                g[j][a] = D(r);
-                for (unsigned int b = a; b < dim && order >= 2; ++b)
-                  {
-                    ++r[b];
-                    H[j][a][b] = H[j][b][a] = D(r);
-                    for (unsigned int c = b; c < dim && order >= 3; ++c)
-                      {
-                        ++r[c];
-                        const double t = D(r);
-                        T[j][a][b][c] = T[j][a][c][b] = T[j][b][a][c]
-                          = T[j][b][c][a] = T[j][c][a][b] = T[j][c][b][a] = t;
-                        --r[c];
-                      }
-                    --r[b];
-                  }
-                --r[a];
-              }
-          }
-
-        Tensor<2, dim> J, Jinv;
+        Tensor<2, dim> Jinv = unit_symmetric_tensor<dim>();
         double         detJ = 1.;
         if (!geometry)
           {
@@ -278,143 +437,11 @@ namespace vesicle_iga
                 if (order >= 3)
                   thirds[q * n_local + j] = T[j];
               }
-            J    = unit_symmetric_tensor<dim>();
-            Jinv = J;
           }
         else
           {
-            // Rational basis R_j = w_j N_j / W by the quotient rule (order 3).
-            double         W = 0;
-            Tensor<1, dim> Wg;
-            Tensor<2, dim> WH;
-            Tensor<3, dim> WT;
-            for (unsigned int j = 0; j < n_local; ++j)
-              {
-                const double wj = geometry->weight(indices[j]);
-                v[j] *= wj;
-                g[j] *= wj;
-                H[j] *= wj;
-                T[j] *= wj;
-                W += v[j];
-                Wg += g[j];
-                WH += H[j];
-                WT += T[j];
-              }
-            for (unsigned int j = 0; j < n_local; ++j)
-              {
-                const double   R = v[j] / W;
-                Tensor<1, dim> Rg;
-                Tensor<2, dim> RH;
-                Tensor<3, dim> RT;
-                for (unsigned int a = 0; a < dim; ++a)
-                  Rg[a] = (g[j][a] - R * Wg[a]) / W;
-                if (order >= 2)
-                  for (unsigned int a = 0; a < dim; ++a)
-                    for (unsigned int b = 0; b < dim; ++b)
-                      RH[a][b] = (H[j][a][b] - Rg[a] * Wg[b] - Rg[b] * Wg[a]
-                                  - R * WH[a][b])
-                                 / W;
-                if (order >= 3)
-                  for (unsigned int a = 0; a < dim; ++a)
-                    for (unsigned int b = 0; b < dim; ++b)
-                      for (unsigned int c = 0; c < dim; ++c)
-                        RT[a][b][c] = (T[j][a][b][c] - RH[a][b] * Wg[c]
-                                       - RH[a][c] * Wg[b] - RH[b][c] * Wg[a]
-                                       - Rg[a] * WH[b][c] - Rg[b] * WH[a][c]
-                                       - Rg[c] * WH[a][b] - R * WT[a][b][c])
-                                      / W;
-                v[j] = R;
-                g[j] = Rg;
-                H[j] = RH;
-                T[j] = RT;
-              }
-            // The geometry map and its derivatives: x = sum_j R_j P_j.
-            Point<dim>     x;
-            Tensor<3, dim> X2; // X2[i][a][b] = d^2 x_i / dxi_a dxi_b
-            Tensor<4, dim> X3;
-            for (unsigned int j = 0; j < n_local; ++j)
-              {
-                const Point<dim> &P = geometry->control_point(indices[j]);
-                for (unsigned int i = 0; i < dim; ++i)
-                  {
-                    x[i] += v[j] * P[i];
-                    for (unsigned int a = 0; a < dim; ++a)
-                      {
-                        J[i][a] += g[j][a] * P[i];
-                        if (order >= 2)
-                          for (unsigned int b = 0; b < dim; ++b)
-                            {
-                              X2[i][a][b] += H[j][a][b] * P[i];
-                              if (order >= 3)
-                                for (unsigned int c = 0; c < dim; ++c)
-                                  X3[i][a][b][c] += T[j][a][b][c] * P[i];
-                            }
-                      }
-                  }
-              }
-            points[q] = x;
-            detJ      = determinant(J);
-            Jinv      = invert(J); // Jinv[a][i] = dxi_a/dx_i
-            // Chain rule (doc/splines.md): with g_i, H_ij, T_ijk the
-            // physical derivatives,
-            //   R_a   = g_i J_ia
-            //   R_ab  = H_ij J_ia J_jb + g_i X2_iab
-            //   R_abc = T_ijk J_ia J_jb J_kc
-            //         + H_ij (X2_iac J_jb + J_ia X2_jbc + X2_iab J_jc)
-            //         + g_i X3_iabc
-            for (unsigned int j = 0; j < n_local; ++j)
-              {
-                values[q * n_local + j] = v[j];
-                Tensor<1, dim> gp;
-                for (unsigned int i = 0; i < dim; ++i)
-                  for (unsigned int a = 0; a < dim; ++a)
-                    gp[i] += g[j][a] * Jinv[a][i];
-                grads[q * n_local + j] = gp;
-                if (order < 2)
-                  continue;
-                Tensor<2, dim> Hr, Hp; // reduced parametric, physical
-                for (unsigned int a = 0; a < dim; ++a)
-                  for (unsigned int b = 0; b < dim; ++b)
-                    {
-                      Hr[a][b] = H[j][a][b];
-                      for (unsigned int i = 0; i < dim; ++i)
-                        Hr[a][b] -= gp[i] * X2[i][a][b];
-                    }
-                Hp                        = transpose(Jinv) * Hr * Jinv;
-                hessians[q * n_local + j] = Hp;
-                if (order < 3)
-                  continue;
-                Tensor<3, dim> Tr, Tp;
-                for (unsigned int a = 0; a < dim; ++a)
-                  for (unsigned int b = 0; b < dim; ++b)
-                    for (unsigned int c = 0; c < dim; ++c)
-                      {
-                        double s = T[j][a][b][c];
-                        for (unsigned int i = 0; i < dim; ++i)
-                          {
-                            s -= gp[i] * X3[i][a][b][c];
-                            for (unsigned int k = 0; k < dim; ++k)
-                              s -= Hp[i][k]
-                                   * (X2[i][a][c] * J[k][b]
-                                      + J[i][a] * X2[k][b][c]
-                                      + X2[i][a][b] * J[k][c]);
-                          }
-                        Tr[a][b][c] = s;
-                      }
-                for (unsigned int i = 0; i < dim; ++i)
-                  for (unsigned int k = 0; k < dim; ++k)
-                    for (unsigned int l = 0; l < dim; ++l)
-                      {
-                        double s = 0;
-                        for (unsigned int a = 0; a < dim; ++a)
-                          for (unsigned int b = 0; b < dim; ++b)
-                            for (unsigned int c = 0; c < dim; ++c)
-                              s += Tr[a][b][c] * Jinv[a][i] * Jinv[b][k]
-                                   * Jinv[c][l];
-                        Tp[i][k][l] = s;
-                      }
-                thirds[q * n_local + j] = Tp;
-              }
+            apply_weights();
+            detJ = map_to_physical(q, Jinv);
           }
 
         // Metric tensor (N1) with the parent element [-1,1]^d:

@@ -5,6 +5,8 @@
 
 namespace vesicle_iga
 {
+  using namespace dealii;
+
   template <int dim>
   SplineSpace<dim>::SplineSpace(const std::array<KnotVector, dim> &kvs)
     : kv(kvs)

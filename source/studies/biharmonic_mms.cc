@@ -9,12 +9,12 @@
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/timer.h>
 
-#include <vesicle_iga/postprocess/field_integrals.h>
 #include <vesicle_iga/fields/dirichlet_constraints.h>
 #include <vesicle_iga/io/spline_output.h>
-#include <vesicle_iga/postprocess/convergence_study_table.h>
-#include <vesicle_iga/postprocess/manufactured_solution.h>
 #include <vesicle_iga/models/stationary_problem.h>
+#include <vesicle_iga/postprocess/convergence_study_table.h>
+#include <vesicle_iga/postprocess/field_integrals.h>
+#include <vesicle_iga/postprocess/manufactured_solution.h>
 #include <vesicle_iga/spline/box_space_parameters.h>
 #include <vesicle_iga/studies/convergence_parameters.h>
 #include <vesicle_iga/studies/study.h>
@@ -24,6 +24,8 @@
 
 namespace vesicle_iga
 {
+  using namespace dealii;
+
   namespace
   {
     const char *section = "Biharmonic MMS";
@@ -94,9 +96,9 @@ namespace vesicle_iga
             const SplineSpace<dim> space
               = box.make_space<dim>(p, convergence.continuity).h_refined(r);
             StationaryProblem<dim> problem(context.communicator,
-                                             space,
-                                             nullptr,
-                                             1);
+                                           space,
+                                           nullptr,
+                                           1);
             if (clamped)
               {
                 const auto dudn
@@ -115,13 +117,13 @@ namespace vesicle_iga
                                                     problem.constraints());
             BiharmonicTerm<dim>        bilaplace(0, f);
             BoundaryLaplacianTerm<dim> moment(
-              0,
-              clamped ? BoundarySelection<dim>() : all, laplacian);
-            const auto result = problem.solve(
-              {&bilaplace, &moment},
-              QGauss<1>(p + 1 + convergence.extra_quadrature_points),
-              solver,
-              &timer);
+              0, clamped ? BoundarySelection<dim>() : all, laplacian);
+            const auto result
+              = problem.solve({&bilaplace, &moment},
+                              QGauss<1>(p + 1
+                                        + convergence.extra_quadrature_points),
+                              solver,
+                              &timer);
 
             const auto errors = integrate_field<dim>(
               problem.dofs(),

@@ -6,6 +6,8 @@
 
 namespace vesicle_iga
 {
+  using namespace dealii;
+
   void
   ConvergenceParameters::declare(ParameterHandler  &prm,
                                  const std::string &default_degrees,

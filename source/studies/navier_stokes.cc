@@ -11,12 +11,12 @@
 #include <deal.II/base/timer.h>
 #include <deal.II/base/utilities.h>
 
-#include <vesicle_iga/postprocess/field_integrals.h>
 #include <vesicle_iga/base/input_error.h>
 #include <vesicle_iga/io/spline_output.h>
 #include <vesicle_iga/models/incompressible_flow.h>
 #include <vesicle_iga/parallel/natural_numbering.h>
 #include <vesicle_iga/postprocess/convergence_study_table.h>
+#include <vesicle_iga/postprocess/field_integrals.h>
 #include <vesicle_iga/postprocess/line_sample.h>
 #include <vesicle_iga/spline/box_space_parameters.h>
 #include <vesicle_iga/studies/convergence_parameters.h>
@@ -27,6 +27,8 @@
 
 namespace vesicle_iga
 {
+  using namespace dealii;
+
   namespace
   {
     const char        *section        = "Navier-Stokes";
@@ -250,16 +252,17 @@ namespace vesicle_iga
       convergence.parse(prm, 0);
       flow_parameters.solver.parse_flow(prm);
       flow_parameters.newton.parse(prm);
-      reynolds_number                       = prm.get_double("Reynolds number");
-      viscosity_text                        = prm.get("Viscosity");
-      force_text                            = prm.get("Body force");
-      initial_text                          = prm.get("Initial velocity");
-      exact_velocity_text                   = prm.get("Exact velocity");
-      exact_pressure_text                   = prm.get("Exact pressure");
-      flow_parameters.weak_penalty_constant = prm.get_double("Weak penalty constant");
-      flow_parameters.weak_inflow_term      = prm.get_bool("Weak inflow term");
-      pressure_level                        = prm.get("Pressure level");
-      quadrature_points                     = prm.get_integer("Quadrature points");
+      reynolds_number     = prm.get_double("Reynolds number");
+      viscosity_text      = prm.get("Viscosity");
+      force_text          = prm.get("Body force");
+      initial_text        = prm.get("Initial velocity");
+      exact_velocity_text = prm.get("Exact velocity");
+      exact_pressure_text = prm.get("Exact pressure");
+      flow_parameters.weak_penalty_constant
+        = prm.get_double("Weak penalty constant");
+      flow_parameters.weak_inflow_term = prm.get_bool("Weak inflow term");
+      pressure_level                   = prm.get("Pressure level");
+      quadrature_points                = prm.get_integer("Quadrature points");
       for (unsigned int b = 1; b <= n_boundaries; ++b)
         {
           prm.enter_subsection("Boundary " + std::to_string(b));
@@ -335,8 +338,9 @@ namespace vesicle_iga
       if (is_constant(viscosity_text, values) && values.size() == 1)
         c.viscosity = std::make_shared<ConstantViscosity<dim>>(values[0]);
       else
-        c.viscosity = std::make_shared<FormulaViscosity<dim>>(parse_function<dim>(
-          viscosity_text, 1, 0, reynolds_number, prefix + "Viscosity"));
+        c.viscosity
+          = std::make_shared<FormulaViscosity<dim>>(parse_function<dim>(
+            viscosity_text, 1, 0, reynolds_number, prefix + "Viscosity"));
       if (is_constant(force_text, values) && values.size() == dim)
         {
           if (std::any_of(values.begin(), values.end(), [](double v) {
@@ -390,19 +394,23 @@ namespace vesicle_iga
                                       const unsigned int r,
                                       TimerOutput       &timer)
     {
-      const SplineSpace<dim> space =
-        box.make_space<dim>(p, convergence.continuity).h_refined(r);
-      const FlowCoefficients<dim> coefficients = this->coefficients(p);
-      bool                        level_fixed;
-      const auto                  conditions = this->conditions(level_fixed);
+      const SplineSpace<dim> space
+        = box.make_space<dim>(p, convergence.continuity).h_refined(r);
+      const FlowCoefficients<dim>  coefficients = this->coefficients(p);
+      bool                         level_fixed;
+      const auto                   conditions = this->conditions(level_fixed);
       IncompressibleFlowParameters parameters = flow_parameters;
-      parameters.fix_pressure_mean =
-        pressure_level == "mean zero"
-        || (pressure_level == "auto" && !level_fixed);
-      parameters.quadrature_points =
-        quadrature_points > 0 ? quadrature_points : p + 2;
-      IncompressibleFlow<dim> flow(
-        context.communicator, space, coefficients, conditions, parameters, timer);
+      parameters.fix_pressure_mean
+        = pressure_level == "mean zero"
+          || (pressure_level == "auto" && !level_fixed);
+      parameters.quadrature_points
+        = quadrature_points > 0 ? quadrature_points : p + 2;
+      IncompressibleFlow<dim> flow(context.communicator,
+                                   space,
+                                   coefficients,
+                                   conditions,
+                                   parameters,
+                                   timer);
       flow.set_initial_state(*parse_function<dim>(initial_text,
                                                   dim,
                                                   1,
@@ -411,10 +419,10 @@ namespace vesicle_iga
                                                     + "/Initial velocity"),
                              0.);
 
-      const std::string tag =
-        "p" + std::to_string(p) + "-level" + std::to_string(r);
-      const bool single_run =
-        convergence.degrees.size() == 1 && convergence.refinements == 0;
+      const std::string tag
+        = "p" + std::to_string(p) + "-level" + std::to_string(r);
+      const bool single_run
+        = convergence.degrees.size() == 1 && convergence.refinements == 0;
       TimeLoop         loop(loop_parameters, context, timer);
       FlowMonitor<dim> monitor(flow, steady_tolerance);
       loop.add_checkpointable("flow", flow);
@@ -459,8 +467,8 @@ namespace vesicle_iga
     {
       if (line_samples.empty())
         return;
-      const std::vector<double> natural =
-        gather_natural(flow.dofs(), flow.solution());
+      const std::vector<double> natural
+        = gather_natural(flow.dofs(), flow.solution());
       for (const auto &sample : line_samples)
         {
           LineSample named = sample;
@@ -493,8 +501,11 @@ namespace vesicle_iga
       if (exact_velocity_text.empty())
         return {};
       const std::string prefix  = std::string(section) + "/";
-      auto              exact_u = parse_function<dim>(
-        exact_velocity_text, dim, 0, reynolds_number, prefix + "Exact velocity");
+      auto              exact_u = parse_function<dim>(exact_velocity_text,
+                                         dim,
+                                         0,
+                                         reynolds_number,
+                                         prefix + "Exact velocity");
       exact_u->set_time(flow.time());
       std::shared_ptr<FunctionParser<dim>> exact_p;
       if (!exact_pressure_text.empty())

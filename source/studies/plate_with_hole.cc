@@ -10,12 +10,12 @@
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/timer.h>
 
-#include <vesicle_iga/postprocess/field_integrals.h>
-#include <vesicle_iga/fields/dirichlet_constraints.h>
 #include <vesicle_iga/base/input_error.h>
+#include <vesicle_iga/fields/dirichlet_constraints.h>
 #include <vesicle_iga/io/spline_output.h>
-#include <vesicle_iga/postprocess/convergence_study_table.h>
 #include <vesicle_iga/models/stationary_problem.h>
+#include <vesicle_iga/postprocess/convergence_study_table.h>
+#include <vesicle_iga/postprocess/field_integrals.h>
 #include <vesicle_iga/studies/convergence_parameters.h>
 #include <vesicle_iga/studies/plate_with_hole_geometry.h>
 #include <vesicle_iga/studies/study.h>
@@ -25,6 +25,8 @@
 
 namespace vesicle_iga
 {
+  using namespace dealii;
+
   KirschSolution::KirschSolution(const double E,
                                  const double nu,
                                  const double Tx,
@@ -115,11 +117,40 @@ namespace vesicle_iga
       run() override;
 
     private:
+      /// Displacement L2, energy and stress errors and the exact energy
+      /// and stress norms, against (P3)-(P4).
+      std::vector<double>
+      errors(const StationaryProblem<2>             &problem,
+             std::shared_ptr<const NurbsGeometry<2>> geometry,
+             const unsigned int                      p,
+             const KirschSolution                   &exact,
+             const LinearElasticityTerm<2>          &elasticity) const;
+      /// Displacement and stresses, computed and exact, as VTU.
+      void
+      write_fields(const StationaryProblem<2>             &problem,
+                   std::shared_ptr<const NurbsGeometry<2>> geometry,
+                   const unsigned int                      p,
+                   const KirschSolution                   &exact,
+                   const LinearElasticityTerm<2>          &elasticity) const;
+
       RunContext            &context;
       ConvergenceParameters  convergence;
       LinearSolverParameters solver;
       double                 E, nu, Tx;
     };
+
+
+    /// The strain of the displacement (components 0, 1) at point q.
+    SymmetricTensor<2, 2>
+    strain(const SplineCellValues<2>              &v,
+           const unsigned int                      q,
+           const std::vector<std::vector<double>> &c)
+    {
+      Tensor<2, 2> G;
+      for (unsigned int a = 0; a < 2; ++a)
+        G[a] = v.gradient(c[a], q);
+      return symmetrize(G);
+    }
 
 
     PlateWithHole::PlateWithHole(ParameterHandler &prm, RunContext &context)
@@ -151,8 +182,8 @@ namespace vesicle_iga
     void
     PlateWithHole::run()
     {
-      const KirschSolution          exact(E, nu, Tx, 1.);
-      const auto                    coarse = make_plate_with_hole_geometry();
+      const KirschSolution    exact(E, nu, Tx, 1.);
+      const auto              coarse = make_plate_with_hole_geometry();
       LinearElasticityTerm<2> elasticity(0, E, nu, true);
       // xi = 0 is y = 0 (u_y = 0), xi = 1 is x = 0 (u_x = 0), eta = 1 the
       // outer edges with the exact traction, eta = 0 the free hole.
@@ -160,11 +191,10 @@ namespace vesicle_iga
       const BoundarySelection<2>       symmetry_x("x-max", "symmetry");
       const BoundarySelection<2>       outer("y-max", "traction");
       TractionTerm<2>                  traction(0,
-                                 outer,
-                                     [&](const Point<2>     &x,
-                                         const Tensor<1, 2> &n) {
-                                       return exact.stress(x) * n;
-                                     });
+                               outer,
+                               [&](const Point<2> &x, const Tensor<1, 2> &n) {
+                                 return exact.stress(x) * n;
+                               });
       const Functions::ZeroFunction<2> zero(2);
 
       TimerOutput           timer(context.communicator,
@@ -188,9 +218,9 @@ namespace vesicle_iga
             const auto geometry = std::make_shared<const NurbsGeometry<2>>(
               coarse->refined_to(space));
             StationaryProblem<2> problem(context.communicator,
-                                           space,
-                                           geometry,
-                                           2);
+                                         space,
+                                         geometry,
+                                         2);
             add_strong_dirichlet_constraints<2>(problem.dofs(),
                                                 geometry,
                                                 symmetry_y,
@@ -203,53 +233,15 @@ namespace vesicle_iga
                                                 zero,
                                                 {true, false},
                                                 problem.constraints());
-            const auto result = problem.solve(
-              {&elasticity, &traction},
-              QGauss<1>(p + 1 + convergence.extra_quadrature_points),
-              solver,
-              &timer);
+            const auto result
+              = problem.solve({&elasticity, &traction},
+                              QGauss<1>(p + 1
+                                        + convergence.extra_quadrature_points),
+                              solver,
+                              &timer);
 
-            const auto strain = [](const SplineCellValues<2>              &v,
-                                   const unsigned int                      q,
-                                   const std::vector<std::vector<double>> &c) {
-              Tensor<2, 2> G;
-              for (unsigned int a = 0; a < 2; ++a)
-                G[a] = v.gradient(c[a], q);
-              return symmetrize(G);
-            };
-            const auto errors = integrate_field<2>(
-              problem.dofs(),
-              geometry,
-              QGauss<1>(p + 3 + convergence.extra_quadrature_points),
-              1,
-              problem.solution(),
-              5,
-              [&](const SplineCellValues<2>              &v,
-                  const unsigned int                      q,
-                  const std::vector<std::vector<double>> &c,
-                  std::vector<double>                    &sums) {
-                const auto s_exact = exact.stress(v.quadrature_point(q));
-                const auto e_h     = strain(v, q, c);
-                const auto s_h     = elasticity.stress(e_h);
-                // Exact strain from the exact stress (plane stress
-                // compliance), so that no displacement derivative is needed.
-                const double                tr = trace(s_exact);
-                const SymmetricTensor<2, 2> e_exact
-                  = ((1 + nu) * s_exact - nu * tr * unit_symmetric_tensor<2>())
-                    / E;
-                const auto de = e_exact - e_h;
-                sums[0] += elasticity.energy_product(de) * v.JxW(q);
-                sums[1]
-                  += (s_exact - s_h).norm() * (s_exact - s_h).norm() * v.JxW(q);
-                sums[2] += elasticity.energy_product(e_exact) * v.JxW(q);
-                sums[3] += s_exact.norm() * s_exact.norm() * v.JxW(q);
-                // Displacement error against (P4).
-                const Tensor<1, 2> u_exact
-                  = exact.displacement(v.quadrature_point(q));
-                for (unsigned int a = 0; a < 2; ++a)
-                  sums[4]
-                    += std::pow(v.value(c[a], q) - u_exact[a], 2) * v.JxW(q);
-              });
+            const auto errors
+              = this->errors(problem, geometry, p, exact, elasticity);
             table.add_row(p,
                           space.n_elements(),
                           problem.dofs().n_dofs(),
@@ -269,38 +261,8 @@ namespace vesicle_iga
 
             if (convergence.write_vtu && r == convergence.refinements)
               {
-                TimerOutput::Scope   t(timer, "output");
-                SplineFieldWriter<2> writer(problem.dofs(), geometry);
-                writer.add_components({"u_x", "u_y"});
-                for (const auto &[name, a, b] :
-                     std::vector<std::tuple<std::string, int, int>>{
-                       {"sigma_xx", 0, 0},
-                       {"sigma_yy", 1, 1},
-                       {"sigma_xy", 0, 1}})
-                  {
-                    writer.add_quantity(
-                      name,
-                      [&,
-                       a = a,
-                       b = b](const SplineCellValues<2>              &v,
-                              const unsigned int                      q,
-                              const std::vector<std::vector<double>> &c) {
-                        return elasticity.stress(strain(v, q, c))[a][b];
-                      },
-                      1);
-                    writer.add_quantity(
-                      name + "_exact",
-                      [&,
-                       a = a,
-                       b = b](const SplineCellValues<2> &v,
-                              const unsigned int         q,
-                              const std::vector<std::vector<double>> &) {
-                        return exact.stress(v.quadrature_point(q))[a][b];
-                      });
-                  }
-                writer.write(problem.solution(),
-                             context.output_directory,
-                             "solution-p" + std::to_string(p));
+                TimerOutput::Scope t(timer, "output");
+                write_fields(problem, geometry, p, exact, elasticity);
               }
           }
       context.pcout
@@ -313,6 +275,83 @@ namespace vesicle_iga
       table.report(context.pcout,
                    context.communicator,
                    context.output_directory);
+    }
+
+
+    std::vector<double>
+    PlateWithHole::errors(const StationaryProblem<2>             &problem,
+                          std::shared_ptr<const NurbsGeometry<2>> geometry,
+                          const unsigned int                      p,
+                          const KirschSolution                   &exact,
+                          const LinearElasticityTerm<2> &elasticity) const
+    {
+      return integrate_field<2>(
+        problem.dofs(),
+        geometry,
+        QGauss<1>(p + 3 + convergence.extra_quadrature_points),
+        1,
+        problem.solution(),
+        5,
+        [&](const SplineCellValues<2>              &v,
+            const unsigned int                      q,
+            const std::vector<std::vector<double>> &c,
+            std::vector<double>                    &sums) {
+          const auto s_exact = exact.stress(v.quadrature_point(q));
+          const auto e_h     = strain(v, q, c);
+          const auto s_h     = elasticity.stress(e_h);
+          // Exact strain from the exact stress (plane stress compliance),
+          // so that no displacement derivative is needed.
+          const double                tr = trace(s_exact);
+          const SymmetricTensor<2, 2> e_exact
+            = ((1 + nu) * s_exact - nu * tr * unit_symmetric_tensor<2>()) / E;
+          const auto de = e_exact - e_h;
+          sums[0] += elasticity.energy_product(de) * v.JxW(q);
+          sums[1] += (s_exact - s_h).norm() * (s_exact - s_h).norm() * v.JxW(q);
+          sums[2] += elasticity.energy_product(e_exact) * v.JxW(q);
+          sums[3] += s_exact.norm() * s_exact.norm() * v.JxW(q);
+          // Displacement error against (P4).
+          const Tensor<1, 2> u_exact
+            = exact.displacement(v.quadrature_point(q));
+          for (unsigned int a = 0; a < 2; ++a)
+            sums[4] += std::pow(v.value(c[a], q) - u_exact[a], 2) * v.JxW(q);
+        });
+    }
+
+
+    void
+    PlateWithHole::write_fields(
+      const StationaryProblem<2>             &problem,
+      std::shared_ptr<const NurbsGeometry<2>> geometry,
+      const unsigned int                      p,
+      const KirschSolution                   &exact,
+      const LinearElasticityTerm<2>          &elasticity) const
+    {
+      SplineFieldWriter<2> writer(problem.dofs(), geometry);
+      writer.add_components({"u_x", "u_y"});
+      for (const auto &[name, a, b] :
+           std::vector<std::tuple<std::string, int, int>>{{"sigma_xx", 0, 0},
+                                                          {"sigma_yy", 1, 1},
+                                                          {"sigma_xy", 0, 1}})
+        {
+          writer.add_quantity(
+            name,
+            [&, a = a, b = b](const SplineCellValues<2>              &v,
+                              const unsigned int                      q,
+                              const std::vector<std::vector<double>> &c) {
+              return elasticity.stress(strain(v, q, c))[a][b];
+            },
+            1);
+          writer.add_quantity(
+            name + "_exact",
+            [&, a = a, b = b](const SplineCellValues<2> &v,
+                              const unsigned int         q,
+                              const std::vector<std::vector<double>> &) {
+              return exact.stress(v.quadrature_point(q))[a][b];
+            });
+        }
+      writer.write(problem.solution(),
+                   context.output_directory,
+                   "solution-p" + std::to_string(p));
     }
   } // namespace
 

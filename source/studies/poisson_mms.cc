@@ -7,13 +7,13 @@
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/timer.h>
 
-#include <vesicle_iga/postprocess/field_integrals.h>
-#include <vesicle_iga/fields/dirichlet_constraints.h>
 #include <vesicle_iga/base/input_error.h>
+#include <vesicle_iga/fields/dirichlet_constraints.h>
 #include <vesicle_iga/io/spline_output.h>
-#include <vesicle_iga/postprocess/convergence_study_table.h>
-#include <vesicle_iga/postprocess/manufactured_solution.h>
 #include <vesicle_iga/models/stationary_problem.h>
+#include <vesicle_iga/postprocess/convergence_study_table.h>
+#include <vesicle_iga/postprocess/field_integrals.h>
+#include <vesicle_iga/postprocess/manufactured_solution.h>
 #include <vesicle_iga/spline/box_space_parameters.h>
 #include <vesicle_iga/studies/convergence_parameters.h>
 #include <vesicle_iga/studies/study.h>
@@ -23,6 +23,8 @@
 
 namespace vesicle_iga
 {
+  using namespace dealii;
+
   namespace
   {
     const char *section = "Poisson MMS";
@@ -101,9 +103,9 @@ namespace vesicle_iga
             const SplineSpace<dim> space
               = box.make_space<dim>(p, convergence.continuity).h_refined(r);
             StationaryProblem<dim> problem(context.communicator,
-                                             space,
-                                             nullptr,
-                                             1);
+                                           space,
+                                           nullptr,
+                                           1);
             add_strong_dirichlet_constraints<dim>(problem.dofs(),
                                                   nullptr,
                                                   strong,
@@ -120,11 +122,12 @@ namespace vesicle_iga
                 return !strong.contains(face, x) && !nitsche.contains(face, x);
               },
               [&](const Point<dim> &x) { return exact.gradient(x); });
-            const auto result = problem.solve(
-              {&laplace, &weak, &neumann},
-              QGauss<1>(p + 1 + convergence.extra_quadrature_points),
-              solver,
-              &timer);
+            const auto result
+              = problem.solve({&laplace, &weak, &neumann},
+                              QGauss<1>(p + 1
+                                        + convergence.extra_quadrature_points),
+                              solver,
+                              &timer);
 
             const auto errors = integrate_field<dim>(
               problem.dofs(),

@@ -2,6 +2,8 @@
 
 namespace vesicle_iga
 {
+  using namespace dealii;
+
   // Each study file defines its description; the list is explicit so that
   // the set of studies is visible in one place (no static registration).
   StudyDescription

@@ -13,8 +13,8 @@
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/trilinos_vector.h>
 
-#include <vesicle_iga/fields/dirichlet_constraints.h>
 #include <vesicle_iga/base/input_error.h>
+#include <vesicle_iga/fields/dirichlet_constraints.h>
 #include <vesicle_iga/io/vesicle_output.h>
 #include <vesicle_iga/models/phase_field_flow.h>
 #include <vesicle_iga/parallel/natural_numbering.h>
@@ -28,6 +28,8 @@
 
 namespace vesicle_iga
 {
+  using namespace dealii;
+
   namespace
   {
     const char *section = "Willmore flow";
@@ -144,8 +146,8 @@ namespace vesicle_iga
       const auto c = gather_natural(model.get_dofs(), model.solution());
       std::vector<double> e;
       for (unsigned int d = 0; d < dim; ++d)
-        e.push_back(zero_level_set_extent(
-          model.get_dofs().get_space(), c, s.center, d));
+        e.push_back(
+          zero_level_set_extent(model.get_dofs().get_space(), c, s.center, d));
       return e;
     }
 
@@ -156,20 +158,20 @@ namespace vesicle_iga
                                   std::vector<double> &row,
                                   std::ostream        &progress)
     {
-      const auto  &f      = model.current_functionals();
-      const auto  &frozen = model.frozen_functionals();
+      const auto  &f            = model.current_functionals();
+      const auto  &frozen       = model.frozen_functionals();
       const double area_error   = f.area / model.area_target() - 1;
       const double volume_error = f.volume / model.volume_target() - 1;
       if (s.constrained)
         max_constraint_error = std::max(
           {max_constraint_error, std::abs(area_error), std::abs(volume_error)});
       // The step minimises E(phi, psi^n): measured with psi frozen.
-      max_energy_increase =
-        std::max(max_energy_increase,
-                 (frozen.energy - previous.energy) / energy_scale(f));
-      max_lagrangian_increase =
-        std::max(max_lagrangian_increase,
-                 (frozen.lagrangian - previous.lagrangian) / energy_scale(f));
+      max_energy_increase
+        = std::max(max_energy_increase,
+                   (frozen.energy - previous.energy) / energy_scale(f));
+      max_lagrangian_increase
+        = std::max(max_lagrangian_increase,
+                   (frozen.lagrangian - previous.lagrangian) / energy_scale(f));
       previous = f;
 
       for (const double e : f.energies)
@@ -194,11 +196,12 @@ namespace vesicle_iga
             row.push_back(material.to_eV(e));
           row.push_back(material.to_eV(f.energy));
           row.push_back(model.take_potential_iterations());
-          const auto x = zero_crossings_along_axis(
-            model.get_dofs().get_space(),
-            gather_natural(model.get_dofs(), model.solution()),
-            s.center,
-            material.direction());
+          const auto x
+            = zero_crossings_along_axis(model.get_dofs().get_space(),
+                                        gather_natural(model.get_dofs(),
+                                                       model.solution()),
+                                        s.center,
+                                        material.direction());
           row.push_back(x.size() >= 2 ? 0.5 * (x.front() + x.back()) : 0.);
         }
       progress << " E/kappa=" << f.energy / s.kappa
@@ -277,16 +280,16 @@ namespace vesicle_iga
       print_summary(const WillmoreMonitor<dim> &monitor,
                     const unsigned int          steps) const;
 
-      RunContext              &context;
-      BoxSpaceParameters       box;
-      unsigned int             degree;
-      int                      continuity;
-      double                   epsilon_over_h;
-      std::string              epsilon_reference;
-      VesicleShape<dim>        shape;
-      bool                     check_jacobian_first;
-      PhaseFieldFlowParameters model_parameters;
-      TimeLoop::Parameters     loop_parameters;
+      RunContext                             &context;
+      BoxSpaceParameters                      box;
+      unsigned int                            degree;
+      int                                     continuity;
+      double                                  epsilon_over_h;
+      std::string                             epsilon_reference;
+      VesicleShape<dim>                       shape;
+      bool                                    check_jacobian_first;
+      PhaseFieldFlowParameters                model_parameters;
+      TimeLoop::Parameters                    loop_parameters;
       typename WillmoreMonitor<dim>::Settings monitor_settings;
 
       std::unique_ptr<TimerOutput>           timer;
@@ -307,20 +310,20 @@ namespace vesicle_iga
       auto &p = model_parameters;
       prm.enter_subsection(section);
       box.parse(prm, dim);
-      degree                   = prm.get_integer("Degree");
-      continuity               = prm.get_integer("Continuity");
-      p.quadrature_points      = prm.get_integer("Quadrature points");
-      p.kappa                  = prm.get_double("Bending rigidity");
-      p.spontaneous_curvature  = prm.get_double("Spontaneous curvature");
-      epsilon_over_h           = prm.get_double("Epsilon over h");
-      epsilon_reference        = prm.get("Element size for epsilon");
-      p.constraint_method      = prm.get("Constraint method");
-      p.alm_jacobian           = prm.get("ALM initial Jacobian");
-      p.M1                     = prm.get_double("M1");
-      p.M2                     = prm.get_double("M2");
-      p.constraint_tolerance   = prm.get_double("Constraint tolerance");
-      p.max_alm_iterations     = prm.get_integer("Max ALM iterations");
-      check_jacobian_first     = prm.get_bool("Check Jacobian");
+      degree                  = prm.get_integer("Degree");
+      continuity              = prm.get_integer("Continuity");
+      p.quadrature_points     = prm.get_integer("Quadrature points");
+      p.kappa                 = prm.get_double("Bending rigidity");
+      p.spontaneous_curvature = prm.get_double("Spontaneous curvature");
+      epsilon_over_h          = prm.get_double("Epsilon over h");
+      epsilon_reference       = prm.get("Element size for epsilon");
+      p.constraint_method     = prm.get("Constraint method");
+      p.alm_jacobian          = prm.get("ALM initial Jacobian");
+      p.M1                    = prm.get_double("M1");
+      p.M2                    = prm.get_double("M2");
+      p.constraint_tolerance  = prm.get_double("Constraint tolerance");
+      p.max_alm_iterations    = prm.get_integer("Max ALM iterations");
+      check_jacobian_first    = prm.get_bool("Check Jacobian");
       shape.parse(prm);
       p.newton.parse(prm);
       p.solver.parse(prm);
@@ -329,16 +332,16 @@ namespace vesicle_iga
       p.time_integration.parse(prm);
       monitor_settings.measure   = prm.get("Stationarity measure");
       monitor_settings.tolerance = prm.get_double("Stationarity tolerance");
-      monitor_settings.interface_speed =
-        prm.get_double("Stationary interface speed");
+      monitor_settings.interface_speed
+        = prm.get_double("Stationary interface speed");
       prm.leave_subsection();
       p.material.parse(prm, dim);
       prm.enter_subsection("Electric field");
       p.potential_solver.parse(prm);
       p.coupling              = prm.get("Coupling");
       p.fixed_point_tolerance = prm.get_double("Fixed-point tolerance");
-      p.max_fixed_point_iterations =
-        prm.get_integer("Max fixed-point iterations");
+      p.max_fixed_point_iterations
+        = prm.get_integer("Max fixed-point iterations");
       prm.leave_subsection();
       prm.leave_subsection();
 
@@ -387,9 +390,9 @@ namespace vesicle_iga
           lower[d] = kv.breakpoints().front();
           upper[d] = kv.breakpoints().back();
         }
-      h                                = epsilon_reference == "largest edge" ? h_long : h_short;
-      const double epsilon             = epsilon_over_h * h;
-      model_parameters.epsilon         = epsilon;
+      h = epsilon_reference == "largest edge" ? h_long : h_short;
+      const double epsilon     = epsilon_over_h * h;
+      model_parameters.epsilon = epsilon;
       check_input(epsilon >= h_long * (1 - 1e-12),
                   "Epsilon over h",
                   std::to_string(epsilon_over_h),
@@ -405,15 +408,16 @@ namespace vesicle_iga
                                               TimerOutput::summary :
                                               TimerOutput::never,
                                             TimerOutput::wall_times);
-      mesh =
-        std::make_unique<PatchMesh<dim>>(context.communicator, *space, nullptr);
-      dofs = std::make_unique<SplineDofHandler<dim>>(*mesh, *space, 1);
+      mesh  = std::make_unique<PatchMesh<dim>>(context.communicator,
+                                              *space,
+                                              nullptr);
+      dofs  = std::make_unique<SplineDofHandler<dim>>(*mesh, *space, 1);
 
       // Clamped boundary (E15): the two outer layers of coefficients are 1
       // for phi and 0 for every Newton increment.
       const BoundarySelection<dim> all("all", "boundary");
-      const auto                   zero_normal =
-        [](const Point<dim> &, const Tensor<1, dim> &) { return 0.; };
+      const auto                   zero_normal
+        = [](const Point<dim> &, const Tensor<1, dim> &) { return 0.; };
       phi_constraints.reinit(dofs->locally_relevant_dofs());
       add_clamped_constraints<dim>(*dofs,
                                    all,
@@ -439,9 +443,9 @@ namespace vesicle_iga
     void
     WillmoreFlow<dim>::write_output(const unsigned int step) const
     {
-      const auto       *electric = model->potential();
-      const auto       &material = model_parameters.material;
-      const std::string name     = Utilities::int_to_string(step, 5);
+      const auto                   *electric = model->potential();
+      const auto                   &material = model_parameters.material;
+      const std::string             name = Utilities::int_to_string(step, 5);
       TrilinosWrappers::MPI::Vector ghosted(dofs->locally_owned_dofs(),
                                             dofs->locally_relevant_dofs(),
                                             context.communicator);
@@ -454,7 +458,7 @@ namespace vesicle_iga
                         (electric ? "fields-" : "phi-") + name);
       // Profiles of phi, sigma (and psi, |grad psi|) along the axes, and
       // phi in the plane of the field axis and the first other axis.
-      const auto          phi_natural = gather_natural(*dofs, model->solution());
+      const auto phi_natural = gather_natural(*dofs, model->solution());
       std::vector<double> psi_natural;
       if (electric)
         psi_natural = gather_natural(*dofs, electric->owned_potential());
@@ -488,30 +492,32 @@ namespace vesicle_iga
       context.pcout << "final: t=" << model->time() << " steps=" << steps
                     << " E_B/kappa=" << f.energies[0] / model_parameters.kappa
                     << " area_error=" << f.area / model->area_target() - 1
-                    << " volume_error=" << f.volume / model->volume_target() - 1;
+                    << " volume_error="
+                    << f.volume / model->volume_target() - 1;
       const auto e = monitor.extents();
       for (unsigned int d = 0; d < dim; ++d)
-        context.pcout << " extent_" << "xyz"[d] << "=" << e[d];
+        context.pcout << " extent_"
+                      << "xyz"[d] << "=" << e[d];
       context.pcout << std::endl;
       if (steps == 0)
         return;
-      const bool alm       = model_parameters.constraint_method == "alm";
-      const bool staggered = model->potential()
-                             && model_parameters.coupling != "fixed-point";
-      context.pcout
-        << "largest |A/A0-1|, |V/V0-1| over the accepted steps: "
-        << monitor.max_constraint_error
-        << (alm ? (monitor.max_constraint_error
-                       <= model_parameters.constraint_tolerance ?
-                     " (within the ALM tolerance)" :
-                     " (ABOVE the ALM tolerance)") :
-                  "")
-        << std::endl
-        << "largest relative increase over an accepted step"
-        << (staggered ? " (psi frozen, as the step minimises)" : "")
-        << ": energy " << std::max(0., monitor.max_energy_increase)
-        << ", Lagrangian " << std::max(0., monitor.max_lagrangian_increase)
-        << std::endl;
+      const bool alm = model_parameters.constraint_method == "alm";
+      const bool staggered
+        = model->potential() && model_parameters.coupling != "fixed-point";
+      context.pcout << "largest |A/A0-1|, |V/V0-1| over the accepted steps: "
+                    << monitor.max_constraint_error
+                    << (alm ? (monitor.max_constraint_error
+                                   <= model_parameters.constraint_tolerance ?
+                                 " (within the ALM tolerance)" :
+                                 " (ABOVE the ALM tolerance)") :
+                              "")
+                    << std::endl
+                    << "largest relative increase over an accepted step"
+                    << (staggered ? " (psi frozen, as the step minimises)" : "")
+                    << ": energy " << std::max(0., monitor.max_energy_increase)
+                    << ", Lagrangian "
+                    << std::max(0., monitor.max_lagrangian_increase)
+                    << std::endl;
     }
 
 
@@ -538,8 +544,8 @@ namespace vesicle_iga
       phi_constraints.distribute(phi0);
       model->set_initial_state(phi0);
 
-      TimeLoop                   loop(loop_parameters, context, *timer);
-      WillmoreMonitor<dim>       monitor(*model,
+      TimeLoop             loop(loop_parameters, context, *timer);
+      WillmoreMonitor<dim> monitor(*model,
                                    model_parameters.material,
                                    monitor_settings);
       loop.add_checkpointable("phase_field", *model);
@@ -547,8 +553,8 @@ namespace vesicle_iga
       loop.add_monitor(monitor);
       loop.add_stationarity_criterion(monitor);
       loop.set_output([this](const unsigned int n) { write_output(n); });
-      const bool restarted = loop.restore();
-      const auto &f        = model->current_functionals();
+      const bool  restarted = loop.restore();
+      const auto &f         = model->current_functionals();
       context.pcout << (restarted ? "restart" : "initial")
                     << " (t = " << model->time() << ", step " << loop.step()
                     << "): bending energy / kappa = "

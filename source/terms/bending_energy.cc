@@ -4,6 +4,8 @@
 
 namespace vesicle_iga
 {
+  using namespace dealii;
+
   template <int dim>
   BendingEnergy<dim>::BendingEnergy(const unsigned int phi,
                                     const double       kappa,
@@ -83,8 +85,8 @@ namespace vesicle_iga
     for (unsigned int q = 0; q < in.size(); ++q)
       {
         const double p = phi[q];
-        const double W =
-          eps * lap[q] + (p / eps - H_sp / std::sqrt(2.)) * (1 - p * p);
+        const double W
+          = eps * lap[q] + (p / eps - H_sp / std::sqrt(2.)) * (1 - p * p);
         // (E5)
         sums[0] += 3 * kappa / (4 * std::sqrt(2.) * eps) * W * W * JxW[q];
       }

@@ -4,6 +4,8 @@
 
 namespace vesicle_iga
 {
+  using namespace dealii;
+
   template <int dim>
   AreaConstraint<dim>::AreaConstraint(const unsigned int phi,
                                       const double       epsilon)
@@ -25,7 +27,7 @@ namespace vesicle_iga
     for (unsigned int k = 0; k < dim; ++k)
       {
         r_gradient[k] = d.residual(phi, D::gradient(k));
-        k_gg[k] = d.jacobian(phi, D::gradient(k), phi, D::gradient(k));
+        k_gg[k]       = d.jacobian(phi, D::gradient(k), phi, D::gradient(k));
       }
   }
 
@@ -77,8 +79,8 @@ namespace vesicle_iga
           g2 += in[fields.gradient[k]][q] * in[fields.gradient[k]][q];
         const double s = phi[q] * phi[q] - 1;
         // (E9)
-        sums[0] += 3 / (2 * std::sqrt(2.)) * (0.5 * eps * g2 + s * s / (4 * eps))
-                   * JxW[q];
+        sums[0] += 3 / (2 * std::sqrt(2.))
+                   * (0.5 * eps * g2 + s * s / (4 * eps)) * JxW[q];
       }
   }
 

@@ -4,6 +4,8 @@
 
 namespace vesicle_iga
 {
+  using namespace dealii;
+
   namespace
   {
     template <int dim>
@@ -75,7 +77,8 @@ namespace vesicle_iga
         const double s = 1 - phi[q] * phi[q];
         // (E7): 3 d_m e_m / (8 sqrt2 eps) = C / 4
         sums[0] += -0.25 * C * s * s
-                   * field_squared<dim>(in, fields.potential_gradient, q) * JxW[q];
+                   * field_squared<dim>(in, fields.potential_gradient, q)
+                   * JxW[q];
       }
   }
 
@@ -118,14 +121,15 @@ namespace vesicle_iga
   template <int dim>
   void
   ElectrolyteDielectricEnergy<dim>::integrate(const QuadratureInputs<dim> &in,
-                                              const double *JxW,
-                                              double       *sums) const
+                                              const double                *JxW,
+                                              double *sums) const
   {
     const double *phi = in[fields.value];
     for (unsigned int q = 0; q < in.size(); ++q)
       {
         const double e = 0.5 * e_in * (1 - phi[q]) + 0.5 * e_out * (1 + phi[q]);
-        sums[0] += -0.5 * e * field_squared<dim>(in, fields.potential_gradient, q)
+        sums[0] += -0.5 * e
+                   * field_squared<dim>(in, fields.potential_gradient, q)
                    * JxW[q]; // (E8)
       }
   }

@@ -4,6 +4,8 @@
 
 namespace vesicle_iga
 {
+  using namespace dealii;
+
   template <int dim>
   FlexoelectricEnergy<dim>::FlexoelectricEnergy(const unsigned int phi,
                                                 const unsigned int potential,

@@ -67,9 +67,9 @@ namespace vesicle_iga
           div += in[gradient[a][a]][q];
         for (unsigned int a = 0; a < dim; ++a)
           for (unsigned int k = 0; k < dim; ++k)
-            out[r_gradient[a][k]][q] +=
-              (a == k ? lambda * div : 0.)
-              + mu * (in[gradient[a][k]][q] + in[gradient[k][a]][q]);
+            out[r_gradient[a][k]][q]
+              += (a == k ? lambda * div : 0.)
+                 + mu * (in[gradient[a][k]][q] + in[gradient[k][a]][q]);
       }
     if (!out.matrix())
       return;

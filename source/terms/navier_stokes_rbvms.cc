@@ -20,14 +20,15 @@ namespace vesicle_iga
                                        const double          C_I)
   {
     const double transient = dt > 0 ? 4. / (dt * dt) : 0.;
-    return 1. / std::sqrt(transient + u * (G * u)
-                          + C_I * nu * nu * scalar_product(G, G));
+    return 1.
+           / std::sqrt(transient + u * (G * u)
+                       + C_I * nu * nu * scalar_product(G, G));
   }
 
 
   /// Fields, residuals and stabilisation at one quadrature point.
   template <int dim>
-  struct NavierStokesRBVMS<dim>::Point
+  struct NavierStokesRBVMS<dim>::FlowPoint
   {
     Tensor<1, dim> u, u_rate, grad_p, laplacian_u, grad_div_u;
     Tensor<2, dim> grad_u; // grad_u[a][k] = d_k u_a
@@ -152,14 +153,14 @@ namespace vesicle_iga
 
 
   template <int dim>
-  typename NavierStokesRBVMS<dim>::Point
+  typename NavierStokesRBVMS<dim>::FlowPoint
   NavierStokesRBVMS<dim>::point(const QuadratureInputs<dim> &in,
                                 const unsigned int           q,
                                 const double                 mu,
                                 const Tensor<1, dim>        &grad_mu,
                                 const Tensor<1, dim>        &force) const
   {
-    Point f;
+    FlowPoint f;
     f.mu      = mu;
     f.grad_mu = grad_mu;
     f.force   = force;
@@ -184,12 +185,15 @@ namespace vesicle_iga
 
     // div(2 mu D(u)) = mu (Delta u + grad div u) + 2 D(u) grad mu (spec 4.8).
     const Tensor<2, dim> two_D = f.grad_u + transpose(f.grad_u);
-    const Tensor<1, dim> viscous =
-      mu * (f.laplacian_u + f.grad_div_u) + two_D * grad_mu;
+    const Tensor<1, dim> viscous
+      = mu * (f.laplacian_u + f.grad_div_u) + two_D * grad_mu;
     f.r_m   = f.u_rate + f.grad_u * f.u + f.grad_p - viscous / f.Re - force;
     f.r_c   = trace(f.grad_u);
-    f.tau_m = tau_momentum(
-      f.G, f.u, in.time_step, mu / f.Re, coefficients.inverse_estimate_constant);
+    f.tau_m = tau_momentum(f.G,
+                           f.u,
+                           in.time_step,
+                           mu / f.Re,
+                           coefficients.inverse_estimate_constant);
     f.tau_c = 1. / (trace(f.G) * f.tau_m);
     f.s     = f.tau_m * f.r_m;
     return f;
@@ -207,12 +211,12 @@ namespace vesicle_iga
     coefficients.body_force.evaluate(in, force);
     for (unsigned int q = 0; q < in.size(); ++q)
       {
-        const Point          f = point(in, q, mu[q], grad_mu[q], force[q]);
+        const FlowPoint      f     = point(in, q, mu[q], grad_mu[q], force[q]);
         const Tensor<2, dim> two_D = f.grad_u + transpose(f.grad_u);
         // Test-side coefficients of (H14): velocity test w = N e_a gives
         // N V_a + grad N . S_a, pressure test q = N gives N r_c + grad N . s.
-        const Tensor<1, dim> V =
-          f.u_rate + f.grad_u * f.u - f.force - f.grad_u * f.s;
+        const Tensor<1, dim> V
+          = f.u_rate + f.grad_u * f.u - f.force - f.grad_u * f.s;
         Tensor<2, dim> S = (f.mu / f.Re) * two_D + outer_product(f.s, f.u)
                            - outer_product(f.s, f.s);
         for (unsigned int a = 0; a < dim; ++a)
@@ -234,13 +238,12 @@ namespace vesicle_iga
 
   template <int dim>
   void
-  NavierStokesRBVMS<dim>::write_jacobian(const Point       &f,
+  NavierStokesRBVMS<dim>::write_jacobian(const FlowPoint   &f,
                                          const unsigned int q,
                                          TermCoefficients  &out) const
   {
     // d tau_M / d u = -tau_M^3 G u (H19); tau_C = 1 / (tr G tau_M).
-    const Tensor<1, dim> dtau_m_du =
-      -f.tau_m * f.tau_m * f.tau_m * (f.G * f.u);
+    const Tensor<1, dim> dtau_m_du = -f.tau_m * f.tau_m * f.tau_m * (f.G * f.u);
     for (unsigned int j = 0; j < atoms.size(); ++j)
       {
         const Atom    &at = atoms[j];
@@ -287,7 +290,8 @@ namespace vesicle_iga
                                    - d_grad_u * f.s - f.grad_u * d_s;
         Tensor<2, dim> d_S = (f.mu / f.Re) * (d_grad_u + transpose(d_grad_u))
                              + outer_product(d_s, f.u) + outer_product(f.s, d_u)
-                             - outer_product(d_s, f.s) - outer_product(f.s, d_s);
+                             - outer_product(d_s, f.s)
+                             - outer_product(f.s, d_s);
         for (unsigned int a = 0; a < dim; ++a)
           d_S[a][a] += -d_p + d_tau_c * f.r_c + f.tau_c * d_r_c;
 

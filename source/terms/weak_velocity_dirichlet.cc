@@ -49,14 +49,18 @@ namespace vesicle_iga
           }
         for (unsigned int c = 0; c < dim; ++c)
           {
-            j_vv[a][c] =
-              d.jacobian(velocity + a, D::value, velocity + c, D::value);
+            j_vv[a][c]
+              = d.jacobian(velocity + a, D::value, velocity + c, D::value);
             for (unsigned int l = 0; l < dim; ++l)
               {
-                j_vg[a][c][l] = d.jacobian(
-                  velocity + a, D::value, velocity + c, D::gradient(l));
-                j_gv[a][l][c] = d.jacobian(
-                  velocity + a, D::gradient(l), velocity + c, D::value);
+                j_vg[a][c][l] = d.jacobian(velocity + a,
+                                           D::value,
+                                           velocity + c,
+                                           D::gradient(l));
+                j_gv[a][l][c] = d.jacobian(velocity + a,
+                                           D::gradient(l),
+                                           velocity + c,
+                                           D::value);
               }
           }
       }
@@ -93,10 +97,11 @@ namespace vesicle_iga
             for (unsigned int k = 0; k < dim; ++k)
               gu[a][k] = in[grad_u[a][k]][q];
           }
-        const Tensor<1, dim> sigma = nu * ((gu + transpose(gu)) * m) - in[p][q] * m;
-        const double         u_n    = uq * m;
-        const bool           inflow = inflow_term && u_n < 0;
-        const double         beta   = inflow ? u_n : 0.;
+        const Tensor<1, dim> sigma
+          = nu * ((gu + transpose(gu)) * m) - in[p][q] * m;
+        const double u_n    = uq * m;
+        const bool   inflow = inflow_term && u_n < 0;
+        const double beta   = inflow ? u_n : 0.;
         // Residual on w = N e_a: N (-sigma_a + (tau_B - beta) g_a)
         // + d_k N (-nu (g_a m_k + m_a g_k)); on q = N: -N m.g.
         for (unsigned int a = 0; a < dim; ++a)
@@ -124,11 +129,11 @@ namespace vesicle_iga
                   {
                     // d(-sigma_a)/d(d_l u_c) = -nu (delta_ac m_l +
                     // delta_al m_c).
-                    out[j_vg[a][c][l]][q] +=
-                      -nu * ((a == c ? m[l] : 0.) + (a == l ? m[c] : 0.));
+                    out[j_vg[a][c][l]][q]
+                      += -nu * ((a == c ? m[l] : 0.) + (a == l ? m[c] : 0.));
                     // d(-nu (g_a m_l + m_a g_l))/du_c.
-                    out[j_gv[a][l][c]][q] +=
-                      -nu * ((a == c ? m[l] : 0.) + (l == c ? m[a] : 0.));
+                    out[j_gv[a][l][c]][q]
+                      += -nu * ((a == c ? m[l] : 0.) + (l == c ? m[a] : 0.));
                   }
               }
           }

@@ -1,17 +1,16 @@
 #include <vesicle_iga/io/field_checkpoint.h>
-
-#include <optional>
 #include <vesicle_iga/time/generalized_alpha.h>
 #include <vesicle_iga/time/local_error_estimate.h>
+
+#include <optional>
 
 namespace vesicle_iga
 {
   using namespace dealii;
 
   void
-  GeneralizedAlphaParameters::declare(
-    ParameterHandler  &prm,
-    const std::string &default_rho)
+  GeneralizedAlphaParameters::declare(ParameterHandler  &prm,
+                                      const std::string &default_rho)
   {
     prm.declare_entry("rho_inf",
                       default_rho,
@@ -73,10 +72,10 @@ namespace vesicle_iga
     const TrilinosWrappers::MPI::Vector &U0,
     const double                         t0)
   {
-    U          = U0;
-    U_previous = U0;
-    U_rate     = 0;
-    t          = t0;
+    U           = U0;
+    U_previous  = U0;
+    U_rate      = 0;
+    t           = t0;
     dt_previous = 0;
   }
 
@@ -122,11 +121,10 @@ namespace vesicle_iga
     state.rate_factor.assign(layout.n_components(), alpha.alpha_m);
     for (unsigned int k = 0; k < layout.n_components(); ++k)
       {
-        const bool algebraic =
-          layout.field(layout.field_of_component(k)).kind
-          == FieldKind::algebraic;
-        state.value_factor[k] =
-          (algebraic && algebraic_at_end ? 1. : alpha.alpha_f) * g * dt;
+        const bool algebraic = layout.field(layout.field_of_component(k)).kind
+                               == FieldKind::algebraic;
+        state.value_factor[k]
+          = (algebraic && algebraic_at_end ? 1. : alpha.alpha_f) * g * dt;
       }
     state.time      = t + dt;
     state.time_step = dt;
@@ -156,7 +154,7 @@ namespace vesicle_iga
   GeneralizedAlphaStepper<dim>::solve_step(const NewtonSolver &newton,
                                            const double        step)
   {
-    dt = step;
+    dt             = step;
     const double g = alpha.gamma;
     // Predictor (spec 2.4, step 1): U_{n+1} = U_n with the boundary values
     // at t_{n+1}, and the rate (N2) needs for it.
@@ -182,10 +180,10 @@ namespace vesicle_iga
   void
   GeneralizedAlphaStepper<dim>::accept_step()
   {
-    U_previous  = U;
-    U           = U_next;
-    U_rate      = rate_next;
-    t          += dt;
+    U_previous = U;
+    U          = U_next;
+    U_rate     = rate_next;
+    t += dt;
     dt_previous = dt;
   }
 

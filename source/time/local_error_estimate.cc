@@ -7,6 +7,8 @@
 
 namespace vesicle_iga
 {
+  using namespace dealii;
+
   double
   local_error_norm(const dealii::TrilinosWrappers::MPI::Vector &U_new,
                    const dealii::TrilinosWrappers::MPI::Vector &U_n,

@@ -29,7 +29,10 @@ namespace vesicle_iga
                     Patterns::Double(0),
                     "Smallest dt; a failure below it ends the run with an "
                     "error (the last checkpoint and time series are kept).");
-    p.declare_entry("Max dt", default_max_dt, Patterns::Double(0), "Cap on dt.");
+    p.declare_entry("Max dt",
+                    default_max_dt,
+                    Patterns::Double(0),
+                    "Cap on dt.");
     p.declare_entry("Growth factor",
                     "1",
                     Patterns::Double(1),
@@ -90,11 +93,11 @@ namespace vesicle_iga
       }
     if (prm.mode == "fixed" || error < 0)
       return true;
-    const double c0  = std::pow(1. / std::max(error, 1e-12), 0.5);
-    double       rho = std::pow(c0, 0.6) * std::pow(c_prev, -0.2);
-    rho              = 1 + std::atan(rho - 1);
-    const bool ok    = rho >= 0.81;
-    double factor    = std::clamp(rho, 0.1, 10.);
+    const double c0   = std::pow(1. / std::max(error, 1e-12), 0.5);
+    double       rho  = std::pow(c0, 0.6) * std::pow(c_prev, -0.2);
+    rho               = 1 + std::atan(rho - 1);
+    const bool ok     = rho >= 0.81;
+    double     factor = std::clamp(rho, 0.1, 10.);
     if (steps_since_cut < int(prm.increase_delay))
       factor = std::min(factor, 1.);
     current_dt = std::clamp(current_dt * factor, prm.min_dt, prm.max_dt);

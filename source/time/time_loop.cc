@@ -102,8 +102,8 @@ namespace vesicle_iga
   {
     if (parameters.restart_file.empty())
       return false;
-    const Checkpoint c =
-      Checkpoint::read(parameters.restart_file, context.communicator);
+    const Checkpoint c
+      = Checkpoint::read(parameters.restart_file, context.communicator);
     step_number = static_cast<unsigned int>(c.scalar("time_loop.step"));
     controller.load(c, "time_loop.controller");
     for (auto &[prefix, object] : objects)
@@ -129,8 +129,8 @@ namespace vesicle_iga
   std::vector<std::string>
   TimeLoop::series_columns(const TimeDependentProblem &problem) const
   {
-    std::vector<std::string> columns = {
-      "step", "t", "dt", "newton_iterations", "krylov_iterations"};
+    std::vector<std::string> columns
+      = {"step", "t", "dt", "newton_iterations", "krylov_iterations"};
     for (const auto &c : problem.step_columns())
       columns.push_back(c.first);
     columns.emplace_back("rejected_steps");
@@ -170,18 +170,18 @@ namespace vesicle_iga
               << " and dt cannot be cut below Min dt = "
               << parameters.step.min_dt << ": " << failure.what()
               << ". The run stops at step " << step_number
-              << "; the time series up to it is in "
-              << context.output_directory << "/" << series_name;
+              << "; the time series up to it is in " << context.output_directory
+              << "/" << series_name;
             if (checkpoints)
               s << " and the last accepted state in "
                 << context.output_directory
                 << "/checkpoint.h5 ('Restart from' continues from it)";
             throw SolverFailure(s.str());
           }
-        const double error =
-          controller.adaptive() ?
-            problem.local_error(parameters.step.atol, parameters.step.rtol) :
-            -1;
+        const double error
+          = controller.adaptive() ?
+              problem.local_error(parameters.step.atol, parameters.step.rtol) :
+              -1;
         if (!controller.accept(error))
           {
             ++rejected;
@@ -190,7 +190,8 @@ namespace vesicle_iga
           }
         problem.accept_step();
         ++step_number;
-        return {step_number, problem.time(), dt, controller.at_maximum(), report};
+        return {
+          step_number, problem.time(), dt, controller.at_maximum(), report};
       }
   }
 
@@ -212,8 +213,7 @@ namespace vesicle_iga
     for (unsigned int k = 0; k < counters.size(); ++k)
       {
         row.push_back(info.report.counters[k]);
-        progress << " " << counters[k].second << "="
-                 << info.report.counters[k];
+        progress << " " << counters[k].second << "=" << info.report.counters[k];
       }
     row.push_back(rejected);
     for (auto *m : monitors)

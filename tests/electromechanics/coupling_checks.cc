@@ -74,25 +74,29 @@ main(int argc, char *argv[])
                             "set Field strength = 5e4\n";
 
   // 1.
-  const auto plain = run("plain", "subsection Time stepping\nset Max steps = 12\nend\n");
-  const auto off   = run("terms-off",
-                       "subsection Time stepping\nset Max steps = 12\nend\n" + field
-                         + "set Flexoelectric energy = false\n"
-                             "set Membrane dielectric energy = false\n"
-                             "set Electrolyte dielectric energy = false\nend\n");
+  const auto plain
+    = run("plain", "subsection Time stepping\nset Max steps = 12\nend\n");
+  const auto off
+    = run("terms-off",
+          "subsection Time stepping\nset Max steps = 12\nend\n" + field
+            + "set Flexoelectric energy = false\n"
+              "set Membrane dielectric energy = false\n"
+              "set Electrolyte dielectric energy = false\nend\n");
   out << "1. terms off vs no field: " << plain.first.rows.size() << " and "
       << off.first.rows.size() << " steps, largest relative difference "
       << (difference(plain.first, off.first) < 1e-10 ? "below 1e-10" : "LARGE")
       << '\n';
 
   // 2. and 3. (flexoelectricity off), to t = 30 (stationary, see above).
-  const auto staggered   = run("staggered",
-                             "subsection Time stepping\nset End time = 30\nend\n" + field
-                               + "set Flexoelectric energy = false\nend\n");
-  const auto fixed_point = run("fixed-point",
-                               "subsection Time stepping\nset End time = 30\nend\n" + field
-                                 + "set Flexoelectric energy = false\n"
-                                   "set Coupling = fixed-point\nend\n");
+  const auto staggered
+    = run("staggered",
+          "subsection Time stepping\nset End time = 30\nend\n" + field
+            + "set Flexoelectric energy = false\nend\n");
+  const auto fixed_point
+    = run("fixed-point",
+          "subsection Time stepping\nset End time = 30\nend\n" + field
+            + "set Flexoelectric energy = false\n"
+              "set Coupling = fixed-point\nend\n");
   for (const auto *c : {&staggered, &fixed_point})
     out << "2. " << (c == &staggered ? "staggered:  " : "fixed-point:")
         << " steps " << c->first.rows.size() << ", t = " << c->first.value("t")
@@ -108,10 +112,11 @@ main(int argc, char *argv[])
   out << "2. shape change by the field (extent_y below its initial 8): "
       << (staggered.first.value("extent_y") < 8 - 0.05 ? "yes" : "NO") << '\n';
 
-  const auto flexo
-    = run("flexoelectric", "subsection Time stepping\nset Max steps = 40\nend\n" + field + "end\n");
-  const double m0 = std::abs(staggered.first.value("field_axis_midpoint"));
-  const double m1 = std::abs(flexo.first.value("field_axis_midpoint"));
+  const auto   flexo = run("flexoelectric",
+                         "subsection Time stepping\nset Max steps = 40\nend\n"
+                           + field + "end\n");
+  const double m0    = std::abs(staggered.first.value("field_axis_midpoint"));
+  const double m1    = std::abs(flexo.first.value("field_axis_midpoint"));
   out << "3. |midpoint on the field axis| without flexoelectricity below "
          "1e-4 h: "
       << (m0 < 5e-5 ? "yes" : "NO")

@@ -26,7 +26,7 @@
 //     1e-3 um per unit time (the frozen-psi force of (E6),
 //     tests/electromechanics/flexoelectric_translation; measured
 //     -2.3e-4), which the stationarity measure leaves out.
-// The printed extents are the measured values; the test fails on any NO.
+// The test fails on any NO.
 
 #include "../time_series_comparison.h"
 
@@ -79,15 +79,32 @@ main(int argc, char *argv[])
                     1e300 :
                     std::stod(increase.substr(increase.find("energy ") + 7))};
   };
-  const auto report = [&](const std::string &name, const Result &r) {
-    // (The number of adaptive steps is not printed: it moves with
-    // round-off, which moves with the CPU; the outcome does not.)
+  // The stationary state against reference values (measured on one
+  // machine) with tolerances from the stopping rule, not from round-off:
+  // the run stops once the interface moves slower than 1e-4 um per unit
+  // time, where the extents still drift by up to ~1e-2 um and E_B by
+  // ~1e-4 relative (measured between runs that stopped at different t:
+  // 23.515 .. 23.52, 0.4259 .. 0.4260). Tolerances: 0.02 h for the
+  // extents, 0.3 % for E_B. Neither the number of adaptive steps nor the
+  // last digits are printed: they move with round-off, which moves with
+  // the CPU.
+  const auto report = [&](const std::string &name,
+                          const Result      &r,
+                          const double       x_ref,
+                          const double       y_ref,
+                          const double       energy_ref) {
+    const bool extents_ok
+      = std::abs(r.series.value("extent_x") - x_ref) < 0.02 * h
+        && std::abs(r.series.value("extent_y") - y_ref) < 0.02 * h;
+    const bool energy_ok
+      = std::abs(r.series.value("bending_energy") / energy_ref - 1) < 3e-3;
     out << name << ": stationary before t = 300: "
         << (r.stationary && r.series.value("t") < 300 ? "yes" : "NO")
         << "; constraints within 1e-4: " << (r.constraints_held ? "yes" : "NO")
-        << "; extents " << r.series.value("extent_x") << " x "
-        << r.series.value("extent_y")
-        << ", E_B/kappa = " << r.series.value("bending_energy") << '\n';
+        << "; extents " << x_ref << " x " << y_ref
+        << " within 0.02 h: " << (extents_ok ? "yes" : "NO") << "; E_B/kappa "
+        << energy_ref << " within 0.3 %: " << (energy_ok ? "yes" : "NO")
+        << '\n';
   };
   const auto symmetric = [&](const Result &r) {
     return std::abs(r.series.value("field_axis_midpoint")) < 1e-4 * h;
@@ -101,10 +118,12 @@ main(int argc, char *argv[])
   const Result ratio = run("conductivity-ratio-2d", "", "conductivity-ratio");
   const Result flexo = run("flexoelectric-2d", "", "flexoelectric");
 
-  report("1. field-free control", control);
-  report("1. electric-field-2d (sigma ratio 0.25)", field);
-  report("1. conductivity-ratio-2d (sigma ratio 4)", ratio);
-  report("1. flexoelectric-2d (2 kV/m)", flexo);
+  report("1. field-free control", control, 23.57, 16.01, 0.3794);
+  report(
+    "1. electric-field-2d (sigma ratio 0.25)", field, 24.03, 15.33, 0.4069);
+  report(
+    "1. conductivity-ratio-2d (sigma ratio 4)", ratio, 23.21, 16.98, 0.4045);
+  report("1. flexoelectric-2d (2 kV/m)", flexo, 23.52, 16.02, 0.426);
   for (const auto *r : {&field, &ratio})
     out << "3. " << (r == &field ? "ratio 0.25" : "ratio 4   ")
         << ": frozen-psi energy never rises: "

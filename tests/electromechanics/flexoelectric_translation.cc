@@ -39,10 +39,10 @@
 
 #include <deal.II/base/quadrature_lib.h>
 
-#include <vesicle_iga/parallel/natural_numbering.h>
-#include <vesicle_iga/parallel/patch_mesh.h>
 #include <vesicle_iga/kernel/system_assembler.h>
 #include <vesicle_iga/models/electric_potential.h>
+#include <vesicle_iga/parallel/natural_numbering.h>
+#include <vesicle_iga/parallel/patch_mesh.h>
 #include <vesicle_iga/physics/vesicle_shape.h>
 #include <vesicle_iga/terms/bending_energy.h>
 #include <vesicle_iga/terms/dielectric_energies.h>
@@ -94,13 +94,13 @@ forces(const double h,
   const QGauss<1>      quadrature(6);
   ElectricPotential<2> potential(dofs, material, quadrature, solver, timer);
 
-  BendingEnergy<2>            bending(0, 1., eps, 0.);
-  FlexoelectricEnergy<2>      flexo(0,
+  BendingEnergy<2>               bending(0, 1., eps, 0.);
+  FlexoelectricEnergy<2>         flexo(0,
                                0,
                                material.flexoelectric_coefficient(),
                                material.membrane_thickness(),
                                eps);
-  MembraneDielectricEnergy<2> membrane(0,
+  MembraneDielectricEnergy<2>    membrane(0,
                                        0,
                                        material.membrane_thickness(),
                                        material.permittivity(material.e_m),
@@ -117,7 +117,7 @@ forces(const double h,
   SystemAssembler<2>                assembler(dofs, quadrature);
   assembler.add_auxiliary_field(dofs); // psi
   // E of the integrands at phi with the potential psi.
-  const auto energies = [&](const std::vector<Integrand<2> *>    &list,
+  const auto energies = [&](const std::vector<Integrand<2> *>   &list,
                             const TrilinosWrappers::MPI::Vector &phi,
                             const TrilinosWrappers::MPI::Vector &psi) {
     AssemblyState state;
@@ -143,8 +143,8 @@ forces(const double h,
              phi_minus = phase_field(-shift);
 
   potential.solve(phi_0);
-  const TrilinosWrappers::MPI::Vector psi_0 = potential.potential();
-  const auto e_plus  = energies(terms, phi_plus, psi_0);
+  const TrilinosWrappers::MPI::Vector psi_0  = potential.potential();
+  const auto                          e_plus = energies(terms, phi_plus, psi_0);
   const auto e_minus = energies(terms, phi_minus, psi_0);
   Forces     f;
   for (unsigned int i = 0; i < 4; ++i)
@@ -156,7 +156,7 @@ forces(const double h,
   const TrilinosWrappers::MPI::Vector psi_minus = potential.potential();
   const double flexo_plus  = energies({&flexo}, phi_plus, psi_plus)[0];
   const double flexo_minus = energies({&flexo}, phi_minus, psi_minus)[0];
-  f.flexo_consistent = (flexo_plus - flexo_minus) / (2 * shift);
+  f.flexo_consistent       = (flexo_plus - flexo_minus) / (2 * shift);
 
   // (d_y phi, d_y phi)
   struct TranslationNorm : public Integrand<2>

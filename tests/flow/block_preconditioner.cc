@@ -76,7 +76,7 @@ cavity_step(const unsigned int n, const double Re, const std::string &method)
                     TimerOutput::wall_times);
   IncompressibleFlow<2> solver(
     MPI_COMM_WORLD, space, coefficients, conditions, parameters, timer);
-  FunctionParser<2>     rest(3);
+  FunctionParser<2> rest(3);
   rest.initialize("x,y,t", "0; 0; 0", {}, true);
   solver.set_initial_state(rest, 0.);
   StepOutcome outcome;
@@ -110,9 +110,9 @@ main(int argc, char *argv[])
                                / block.result.iterations);
           out << "Re = " << Re << ", " << n << "^2: converged "
               << (block.converged ? "yes" : "NO") << ", Newton "
-              << block.result.iterations << ", FGMRES per Newton "
-              << std::fixed << std::setprecision(1) << per_newton.back()
-              << std::defaultfloat << std::setprecision(6);
+              << block.result.iterations << ", FGMRES per Newton " << std::fixed
+              << std::setprecision(1) << per_newton.back() << std::defaultfloat
+              << std::setprecision(6);
           // The sparse direct comparison where it is cheap.
           if (n <= 64)
             {

@@ -18,9 +18,9 @@
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/quadrature_lib.h>
 
-#include <vesicle_iga/parallel/natural_numbering.h>
 #include <vesicle_iga/kernel/jacobian_check.h>
 #include <vesicle_iga/models/incompressible_flow.h>
+#include <vesicle_iga/parallel/natural_numbering.h>
 
 #include <cmath>
 #include <fstream>
@@ -40,9 +40,9 @@ check(const unsigned int p, const bool pressure_at_end)
     kv[d] = KnotVector::uniform(p, dim == 2 ? 4 : 2, 0., 1.);
   const SplineSpace<dim> space(kv);
 
-  const std::string   coords = dim == 2 ? "x,y,t" : "x,y,z,t";
-  auto viscosity = std::make_shared<FunctionParser<dim>>(1);
-  auto force     = std::make_shared<FunctionParser<dim>>(dim);
+  const std::string coords    = dim == 2 ? "x,y,t" : "x,y,z,t";
+  auto              viscosity = std::make_shared<FunctionParser<dim>>(1);
+  auto              force     = std::make_shared<FunctionParser<dim>>(dim);
   viscosity->initialize(coords, "1 + 0.5*x*y", {}, true);
   force->initialize(coords, dim == 2 ? "x; y^2" : "x; y^2; z", {}, true);
   FlowCoefficients<dim> coefficients;
@@ -69,8 +69,8 @@ check(const unsigned int p, const bool pressure_at_end)
      true}};
 
   IncompressibleFlowParameters parameters;
-  parameters.solver.method                      = "direct";
-  parameters.quadrature_points                  = p + 2;
+  parameters.solver.method                     = "direct";
+  parameters.quadrature_points                 = p + 2;
   parameters.time_integration.algebraic_at_end = pressure_at_end;
   TimerOutput             timer(MPI_COMM_WORLD,
                     out,
@@ -107,8 +107,8 @@ check(const unsigned int p, const bool pressure_at_end)
   const double dt = 1;
 
   // Trial rate a and direction d, zero on the constrained unknowns.
-  TrilinosWrappers::MPI::Vector a = interpolate(rate), d(a);
-  const auto &constraints = solver.increment_constraints();
+  TrilinosWrappers::MPI::Vector a           = interpolate(rate), d(a);
+  const auto                   &constraints = solver.increment_constraints();
   for (const auto i : solver.dofs().locally_owned_dofs())
     {
       a[i] = 0.3 * std::sin(1.7 * i) + 0.1;

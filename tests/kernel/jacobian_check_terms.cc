@@ -51,7 +51,7 @@ template <int dim>
 TrilinosWrappers::MPI::Vector
 smooth_field(const SplineDofHandler<dim> &dofs, const double shift)
 {
-  const unsigned int  nc = dofs.n_components();
+  const unsigned int  nc    = dofs.n_components();
   const auto         &space = dofs.get_space();
   std::vector<double> values(space.n_basis() * nc);
   for (unsigned int i = 0; i < space.n_basis(); ++i)
@@ -65,7 +65,9 @@ smooth_field(const SplineDofHandler<dim> &dofs, const double shift)
       }
   TrilinosWrappers::MPI::Vector owned(dofs.locally_owned_dofs(),
                                       MPI_COMM_WORLD);
-  scatter_natural(dofs, interpolate_at_greville_points(space, values, nc), owned);
+  scatter_natural(dofs,
+                  interpolate_at_greville_points(space, values, nc),
+                  owned);
   TrilinosWrappers::MPI::Vector ghosted(dofs.locally_owned_dofs(),
                                         dofs.locally_relevant_dofs(),
                                         MPI_COMM_WORLD);
@@ -99,8 +101,8 @@ check(const std::string                   &name,
   state.time_step = 0.25;
   const AffineConstraints<double> none;
   const auto                      d = test_direction(dofs, none);
-  const JacobianCheck             r =
-    check_jacobian(assembler, state, none, d, {1e-2, 1e-3, 1e-4});
+  const JacobianCheck             r
+    = check_jacobian(assembler, state, none, d, {1e-2, 1e-3, 1e-4});
   out << dim << "D " << std::left << std::setw(32) << name << std::right;
   if (r.norm_Kd == 0)
     {
@@ -111,7 +113,7 @@ check(const std::string                   &name,
       TrilinosWrappers::MPI::Vector owned(d);
       owned = value;
       owned.add(0.1, d);
-      shifted = owned;
+      shifted             = owned;
       AssemblyState moved = state;
       moved.value         = &shifted;
       assembler.assemble(moved, none, &R1, nullptr);
@@ -172,11 +174,11 @@ linear_terms()
   std::array<KnotVector, dim> kv;
   for (unsigned int d = 0; d < dim; ++d)
     kv[d] = KnotVector::uniform(2, 4, 0., 1.);
-  const SplineSpace<dim>           space(kv);
-  const PatchMesh<dim>             mesh(MPI_COMM_WORLD, space, nullptr);
-  const SplineDofHandler<dim>      scalar(mesh, space, 1), vector(mesh, space, dim);
+  const SplineSpace<dim>      space(kv);
+  const PatchMesh<dim>        mesh(MPI_COMM_WORLD, space, nullptr);
+  const SplineDofHandler<dim> scalar(mesh, space, 1), vector(mesh, space, dim);
   const Functions::CosineFunction<dim> f;
-  const BoundarySelection<dim>     all("all", "boundary");
+  const BoundarySelection<dim>         all("all", "boundary");
 
   LaplaceTerm<dim> laplace(0, f);
   check<dim>("laplace", laplace, scalar);
@@ -193,9 +195,11 @@ linear_terms()
   check<dim>("boundary laplacian", moment, scalar);
   LinearElasticityTerm<dim> elasticity(0, 10., 0.3, dim == 2);
   check<dim>("linear elasticity", elasticity, vector);
-  TractionTerm<dim> traction(0, all, [](const Point<dim> &x, const Tensor<1, dim> &n) {
-    return x[0] * n;
-  });
+  TractionTerm<dim> traction(0,
+                             all,
+                             [](const Point<dim> &x, const Tensor<1, dim> &n) {
+                               return x[0] * n;
+                             });
   check<dim>("traction", traction, vector);
 }
 
@@ -223,7 +227,7 @@ flow_terms()
   check<dim>("RBVMS (H14), (H18)-(H19)", rbvms, dofs);
   // Inflow on parts of the boundary (u.m < 0) activates the inflow term.
   const Functions::ConstantFunction<dim> ub(0.3, dim + 1);
-  WeakVelocityDirichlet<dim> weak(
+  WeakVelocityDirichlet<dim>             weak(
     0, dim, coefficients, BoundarySelection<dim>("all", "weak"), ub, 15., true);
   check<dim>("weak velocity (H20)-(H21)", weak, dofs);
 }

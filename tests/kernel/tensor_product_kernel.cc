@@ -153,7 +153,7 @@ check(const unsigned int p, const unsigned int element_choice, const int face)
     pairs.push_back({static_cast<unsigned int>(rng() % D::n_plain),
                      static_cast<unsigned int>(rng() % D::n_plain),
                      C[k].data()});
-  const auto reference = pairs;
+  const auto          reference = pairs;
   std::vector<double> A(n * n2, 0.);
   K::integrate_matrix(f, f2, pairs, false, A.data(), n2, ws);
   diff = scale = 0;
@@ -179,7 +179,7 @@ check(const unsigned int p, const unsigned int element_choice, const int face)
       if (a != b)
         pairs.push_back({b, a, C[k].data()});
     }
-  const auto symmetric_reference = pairs;
+  const auto          symmetric_reference = pairs;
   std::vector<double> S(n * n, 0.);
   K::integrate_matrix(f, f, pairs, true, S.data(), n, ws);
   diff = scale = 0;

@@ -26,6 +26,7 @@
 #include <fstream>
 
 using namespace vesicle_iga;
+using namespace dealii;
 
 std::ofstream out("output");
 
@@ -71,10 +72,7 @@ solve(const std::string &problem, const unsigned int n)
   std::array<KnotVector, dim> kv;
   for (unsigned int d = 0; d < dim; ++d)
     kv[d] = KnotVector::uniform(p, n, 0., 1.);
-  StationaryProblem<dim>                 lsp(MPI_COMM_WORLD,
-                             SplineSpace<dim>(kv),
-                             nullptr,
-                             1);
+  StationaryProblem<dim> lsp(MPI_COMM_WORLD, SplineSpace<dim>(kv), nullptr, 1);
   const BoundarySelection<dim>           all("all", "boundary");
   const Functions::ConstantFunction<dim> one(1.);
   const Functions::ZeroFunction<dim>     zero;
@@ -95,12 +93,12 @@ solve(const std::string &problem, const unsigned int n)
   solver.multigrid.coarse_size = 200;
   BiharmonicTerm<dim> bilaplace(0, one);
   LaplaceTerm<dim>    laplace(0, one);
-  const auto          result = lsp.solve(
-    {problem == "biharmonic" ? static_cast<Term<dim> *>(&bilaplace) :
-                                        static_cast<Term<dim> *>(&laplace)},
-    QGauss<1>(p + 1),
-    solver,
-    nullptr);
+  const auto          result = lsp.solve({problem == "biharmonic" ?
+                                            static_cast<Term<dim> *>(&bilaplace) :
+                                            static_cast<Term<dim> *>(&laplace)},
+                                QGauss<1>(p + 1),
+                                solver,
+                                nullptr);
   out << problem << " p=3 " << n << "^" << dim << " elements: CG iterations "
       << result.iterations << ", residual "
       << (result.residual < 1e-10 ? "below 1e-10" : "TOO LARGE") << std::endl;

@@ -21,6 +21,7 @@
 #include <iomanip>
 
 using namespace vesicle_iga;
+using namespace dealii;
 
 std::ofstream out("output");
 

@@ -18,14 +18,15 @@
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/fe/fe_values.h>
 
-#include <vesicle_iga/postprocess/field_integrals.h>
 #include <vesicle_iga/io/spline_output.h>
 #include <vesicle_iga/models/stationary_problem.h>
+#include <vesicle_iga/postprocess/field_integrals.h>
 #include <vesicle_iga/studies/plate_with_hole_geometry.h>
 
 #include <fstream>
 
 using namespace vesicle_iga;
+using namespace dealii;
 
 std::string
 ok(const double e)
@@ -105,10 +106,10 @@ main(int argc, char *argv[])
   // Exact conversion of a B-spline field on a box into FE_Q(p).
   for (const unsigned int p : {2u, 3u, 5u})
     {
-      const KnotVector       kx(p, {0, 0.3, 0.5, 0.9, 1.4}, {int(p) - 1, 0, 1});
-      const KnotVector       ky = KnotVector::uniform(p, 3, -1, 1);
-      const SplineSpace<2>   space(std::array<KnotVector, 2>{{kx, ky}});
-      StationaryProblem<2>   problem(MPI_COMM_WORLD, space, nullptr, 1);
+      const KnotVector     kx(p, {0, 0.3, 0.5, 0.9, 1.4}, {int(p) - 1, 0, 1});
+      const KnotVector     ky = KnotVector::uniform(p, 3, -1, 1);
+      const SplineSpace<2> space(std::array<KnotVector, 2>{{kx, ky}});
+      StationaryProblem<2> problem(MPI_COMM_WORLD, space, nullptr, 1);
       TrilinosWrappers::MPI::Vector c(problem.dofs().locally_owned_dofs(),
                                       problem.dofs().locally_relevant_dofs(),
                                       MPI_COMM_WORLD);

@@ -13,10 +13,10 @@
 //      error at eps / R = 0.8. This is why eps must shrink with h.
 #include <deal.II/base/quadrature_lib.h>
 
+#include <vesicle_iga/kernel/system_assembler.h>
 #include <vesicle_iga/parallel/natural_numbering.h>
 #include <vesicle_iga/parallel/patch_mesh.h>
 #include <vesicle_iga/parallel/spline_dof_handler.h>
-#include <vesicle_iga/kernel/system_assembler.h>
 #include <vesicle_iga/physics/vesicle_shape.h>
 #include <vesicle_iga/terms/bending_energy.h>
 
@@ -47,9 +47,9 @@ relative_error(const unsigned int n, const double epsilon)
                                       MPI_COMM_WORLD);
   scatter_natural(dofs, c, owned);
   phi = owned;
-  BendingEnergy<3>           bending(0, 1., epsilon, 0.);
-  const SystemAssembler<3>   assembler(dofs, QGauss<1>(6));
-  AssemblyState              state;
+  BendingEnergy<3>         bending(0, 1., epsilon, 0.);
+  const SystemAssembler<3> assembler(dofs, QGauss<1>(6));
+  AssemblyState            state;
   state.value  = &phi;
   const auto E = assembler.integrate({&bending}, state);
   return E[0] / (8 * M_PI) - 1;

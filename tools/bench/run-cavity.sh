@@ -48,8 +48,8 @@ EOP
     read -r steps newton krylov < <(series_counts $out)
     dev() { echo "$log" | sed -n "s/^$1.csv: largest deviation.*: \(.*\)/\1/p"; }
     awk -v c="$n^2" -v np=$np -v u=$unknowns -v s=$steps -v nw=$newton -v k=$krylov \
-        -v T=$total -v a="$(log_section 'flow assembly')" -v r="$(log_section 'flow residual')" \
-        -v p="$(log_section 'flow preconditioner setup')" -v so="$(log_section 'flow linear solve')" \
+        -v T=$total -v a="$(log_section assembly)" -v r="$(log_section residual)" \
+        -v p="$(log_section preconditioner)" -v so="$(log_section 'linear solve')" \
         -v du="$(dev centerline-u)" -v dv="$(dev centerline-v)" 'BEGIN {
       printf "%-8s %-5s %-8s %-6s %-6s %-10.1f %-9.3f %-9.3f %-9.3f %-9.3f %-9.4f %-8.4f\n",
         c, np, u, s, nw, k/nw, T/nw, (a+r)/nw, p/nw, so/nw, du, dv }'

@@ -37,8 +37,8 @@ EOP
   read -r steps newton krylov < <(series_counts $out)
   peak=$(log_peak_mb)
   awk -v c="$n^3" -v np=$np -v u=$unknowns -v s=$steps -v nw=$newton -v k=$krylov \
-      -v T=$total -v a="$(log_section 'flow assembly')" -v r="$(log_section 'flow residual')" \
-      -v p="$(log_section 'flow preconditioner setup')" -v so="$(log_section 'flow linear solve')" \
+      -v T=$total -v a="$(log_section assembly)" -v r="$(log_section residual)" \
+      -v p="$(log_section preconditioner)" -v so="$(log_section 'linear solve')" \
       -v m=$peak 'BEGIN {
     printf "%-6s %-5s %-8s %-6s %-6s %-10.1f %-8.2f %-10.2f %-10.2f %-9.2f %-9.2f %-8.0f\n",
       c, np, u, s, nw, k/nw, T/s, T/nw, (a+r)/nw, p/nw, so/nw, m }'

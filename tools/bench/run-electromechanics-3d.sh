@@ -33,7 +33,9 @@ for n in $sizes; do
 $(cat tools/bench/electromechanics-3d.prm)
 set Output directory = $out
 subsection Willmore flow
-  set Max steps = $STEPS
+  subsection Time stepping
+    set Max steps = $STEPS
+  end
   set Epsilon over h = $(awk -v n=$n 'BEGIN {print n / 30}')
   subsection Mesh
     set Elements = $n
@@ -51,8 +53,8 @@ EOP
     # 'ALM Jacobian' holds assembly and solves of its own: not added again.
     awk -v c="$n^3" -v np=$np -v u=$(log_unknowns) -v s=$steps -v nw=$newton \
         -v k=$krylov -v al=$alm -v cg=$cg -v T=$(log_total) \
-        -v ps="$(log_section potential)" -v a="$(log_section assembly)" \
-        -v p="$(log_section preconditioner)" -v so="$(log_section solve)" \
+        -v ps="$(log_section potential)" -v a="$(log_sum assembly residual)" \
+        -v p="$(log_section preconditioner)" -v so="$(log_section 'linear solve')" \
         -v mo="$(log_section monitor)" -v o="$(log_section output)" \
         -v m=$(log_peak_mb) 'BEGIN {
       step = (ps * s / (s + 1) + a + p + so + mo) / s

@@ -7,6 +7,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 source tools/mpi-env.sh
+source tools/bench/log-fields.sh
 sizes=${*:-20 40 60}
 printf "%-6s %-5s %-8s %-6s %-6s %-8s %-9s %-10s %-9s %-9s %-9s %-8s\n" \
   cells ranks unknowns steps newton krylov s/step s/newton assembly mg-setup solve peakMB
@@ -30,8 +31,8 @@ EOP
     read -r steps newton krylov < <(awk -F, 'NR>1 {s++; n+=$4; k+=$5} END {print s, n, k}' $out/time-series.csv)
     peak=$(echo "$log" | sed -n 's/^peak memory (VmHWM) per rank: max \([0-9.]*\) MB.*/\1/p')
     awk -v c="$n^3" -v np=$np -v u=$unknowns -v s=$steps -v nw=$newton -v k=$krylov \
-        -v T=$total -v a="$(section assembly)" -v p="$(section preconditioner)" \
-        -v so="$(section solve)" -v m=$peak 'BEGIN {
+        -v T=$total -v a="$(log_sum assembly residual)" -v p="$(section preconditioner)" \
+        -v so="$(section "linear solve")" -v m=$peak 'BEGIN {
       printf "%-6s %-5s %-8s %-6s %-6s %-8s %-9.2f %-10.2f %-9.2f %-9.2f %-9.2f %-8.0f\n",
         c, np, u, s, nw, k, T/s, T/nw, a, p, so, m }'
   done

@@ -7,7 +7,6 @@
 
 namespace vesicle_iga
 {
-  using namespace dealii;
 
   /**
    * A set of boundary pieces of a patch, read from a .prm string such as
@@ -37,7 +36,7 @@ namespace vesicle_iga
     touches_face(const unsigned int face) const;
     /// Whether the physical point x of face f belongs to the selection.
     bool
-    contains(const unsigned int face, const Point<dim> &x) const;
+    contains(const unsigned int face, const dealii::Point<dim> &x) const;
 
     static std::string
     face_name(const unsigned int face);

@@ -35,9 +35,9 @@ namespace vesicle_iga
     const SplineDofHandler<dim>              &dof_handler,
     std::shared_ptr<const NurbsGeometry<dim>> geometry,
     const BoundarySelection<dim>             &selection,
-    const Function<dim>                      &g,
+    const dealii::Function<dim>              &g,
     const std::vector<bool>                  &components,
-    AffineConstraints<double>                &constraints);
+    dealii::AffineConstraints<double>        &constraints);
 
   /**
    * Clamped condition of fourth-order problems: u = g and du/dn = g_n,
@@ -51,8 +51,9 @@ namespace vesicle_iga
   add_clamped_constraints(
     const SplineDofHandler<dim>  &dof_handler,
     const BoundarySelection<dim> &selection,
-    const Function<dim>          &g,
-    const std::function<double(const Point<dim> &, const Tensor<1, dim> &)>
-                              &normal_derivative,
-    AffineConstraints<double> &constraints);
+    const dealii::Function<dim>  &g,
+    const std::function<double(const dealii::Point<dim> &,
+                               const dealii::Tensor<1, dim> &)>
+                                      &normal_derivative,
+    dealii::AffineConstraints<double> &constraints);
 } // namespace vesicle_iga

@@ -53,6 +53,7 @@ namespace vesicle_iga
     virtual void
     save(Checkpoint &checkpoint, const std::string &prefix) const = 0;
     virtual void
-    load(const Checkpoint &checkpoint, const std::string &prefix) = 0;
+    load(const Checkpoint &checkpoint, const std::string &prefix)
+      = 0;
   };
 } // namespace vesicle_iga

@@ -36,13 +36,14 @@ namespace vesicle_iga
    */
   template <int dim>
   void
-  interpolate_to_fe_field(const SplineDofHandler<dim>              &spline_dofs,
-                          std::shared_ptr<const NurbsGeometry<dim>> geometry,
-                          const TrilinosWrappers::MPI::Vector &ghosted_solution,
-                          const std::vector<PointEvaluator<dim>> &quantities,
-                          const unsigned int     derivative_order,
-                          const DoFHandler<dim> &fe_dofs,
-                          LinearAlgebra::distributed::Vector<double> &result);
+  interpolate_to_fe_field(
+    const SplineDofHandler<dim>                        &spline_dofs,
+    std::shared_ptr<const NurbsGeometry<dim>>           geometry,
+    const dealii::TrilinosWrappers::MPI::Vector        &ghosted_solution,
+    const std::vector<PointEvaluator<dim>>             &quantities,
+    const unsigned int                                  derivative_order,
+    const dealii::DoFHandler<dim>                      &fe_dofs,
+    dealii::LinearAlgebra::distributed::Vector<double> &result);
 
   /**
    * Writes named quantities of a spline field as VTU/PVTU (one .vtu per
@@ -68,9 +69,9 @@ namespace vesicle_iga
     /// Writes directory/basename.pvtu and the per-rank .vtu files; returns
     /// the name of the .pvtu record.
     std::string
-    write(const TrilinosWrappers::MPI::Vector &ghosted_solution,
-          const std::string                   &directory,
-          const std::string                   &basename) const;
+    write(const dealii::TrilinosWrappers::MPI::Vector &ghosted_solution,
+          const std::string                           &directory,
+          const std::string                           &basename) const;
 
   private:
     const SplineDofHandler<dim>              &spline_dofs;

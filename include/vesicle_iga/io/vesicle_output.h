@@ -18,12 +18,12 @@ namespace vesicle_iga
    */
   template <int dim>
   void
-  write_vesicle_vtu(const SplineDofHandler<dim>         &dofs,
-                    const TrilinosWrappers::MPI::Vector &phi,
-                    const TrilinosWrappers::MPI::Vector *psi,
-                    const ElectromechanicsMaterial      &material,
-                    const std::string                   &directory,
-                    const std::string                   &basename);
+  write_vesicle_vtu(const SplineDofHandler<dim>                 &dofs,
+                    const dealii::TrilinosWrappers::MPI::Vector &phi,
+                    const dealii::TrilinosWrappers::MPI::Vector *psi,
+                    const ElectromechanicsMaterial              &material,
+                    const std::string                           &directory,
+                    const std::string                           &basename);
 
   /**
    * Profiles of phi and sigma(phi) (and psi, |grad psi| with a potential)
@@ -38,7 +38,7 @@ namespace vesicle_iga
                       const std::vector<double>      &phi_natural,
                       const std::vector<double>      *psi_natural,
                       const ElectromechanicsMaterial &material,
-                      const Point<dim>               &center,
+                      const dealii::Point<dim>       &center,
                       const std::string              &filename);
 
   /**
@@ -53,7 +53,7 @@ namespace vesicle_iga
   void
   write_plane_section(const SplineSpace<dim>    &space,
                       const std::vector<double> &phi_natural,
-                      const Point<dim>          &center,
+                      const dealii::Point<dim>  &center,
                       const unsigned int         first_axis,
                       const unsigned int         second_axis,
                       const std::string         &filename);

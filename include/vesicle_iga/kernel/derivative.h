@@ -63,44 +63,22 @@ namespace vesicle_iga
       return index_of3(a, b, c);
     }
 
-    /// The order of derivative i along each direction (plain derivatives).
-    static constexpr std::array<unsigned int, dim>
+    /// The order of derivative i along each direction (plain derivatives),
+    /// from a table built at compile time.
+    static std::array<unsigned int, dim>
     orders(const unsigned int i)
     {
-      std::array<unsigned int, dim> o{};
-      if (i == value)
-        return o;
-      if (i <= dim)
-        {
-          o[i - 1] = 1;
-          return o;
-        }
-      for (unsigned int k = 0; k < dim; ++k)
-        for (unsigned int l = k; l < dim; ++l)
-          {
-            if (hessian(k, l) == i)
-              {
-                ++o[k];
-                ++o[l];
-                return o;
-              }
-            for (unsigned int m = l; m < dim; ++m)
-              if (third(k, l, m) == i)
-                {
-                  ++o[k];
-                  ++o[l];
-                  ++o[m];
-                  return o;
-                }
-          }
-      return o;
+      static constexpr auto table = make_order_table();
+      return table[i];
     }
 
     /// Total order |alpha| of a plain derivative.
     static constexpr unsigned int
     total_order(const unsigned int i)
     {
-      return i == 0 ? 0 : (i <= dim ? 1 : (i < 1 + dim + dim * (dim + 1) / 2 ? 2 : 3));
+      return i == 0 ?
+               0 :
+               (i <= dim ? 1 : (i < 1 + dim + dim * (dim + 1) / 2 ? 2 : 3));
     }
 
     /// The plain derivatives a combined one stands for (the derivative
@@ -114,11 +92,33 @@ namespace vesicle_iga
           return 1;
         }
       for (unsigned int l = 0; l < dim; ++l)
-        plain[l] = i == laplacian ? hessian(l, l) : third(i - n_plain - 1, l, l);
+        plain[l]
+          = i == laplacian ? hessian(l, l) : third(i - n_plain - 1, l, l);
       return dim;
     }
 
   private:
+    static constexpr std::array<std::array<unsigned int, dim>, n_plain>
+    make_order_table()
+    {
+      std::array<std::array<unsigned int, dim>, n_plain> t{};
+      for (unsigned int k = 0; k < dim; ++k)
+        {
+          t[gradient(k)][k] = 1;
+          for (unsigned int l = k; l < dim; ++l)
+            {
+              ++t[hessian(k, l)][k];
+              ++t[hessian(k, l)][l];
+              for (unsigned int m = l; m < dim; ++m)
+                {
+                  ++t[third(k, l, m)][k];
+                  ++t[third(k, l, m)][l];
+                  ++t[third(k, l, m)][m];
+                }
+            }
+        }
+      return t;
+    }
     static constexpr unsigned int
     index_of(const unsigned int k,
              const unsigned int l,

@@ -26,8 +26,8 @@ namespace vesicle_iga
    */
   struct AssemblyState
   {
-    const dealii::TrilinosWrappers::MPI::Vector              *value = nullptr;
-    const dealii::TrilinosWrappers::MPI::Vector              *rate  = nullptr;
+    const dealii::TrilinosWrappers::MPI::Vector               *value = nullptr;
+    const dealii::TrilinosWrappers::MPI::Vector               *rate  = nullptr;
     std::vector<const dealii::TrilinosWrappers::MPI::Vector *> auxiliary;
     std::vector<double> value_factor, rate_factor;
     double              time = 0, time_step = 0;
@@ -101,11 +101,11 @@ namespace vesicle_iga
     void
     rebuild_plans();
 
-    const SplineDofHandler<dim>                &dofs;
-    const dealii::Quadrature<1>                 quadrature;
-    std::shared_ptr<const NurbsGeometry<dim>>   geometry;
-    std::vector<const SplineDofHandler<dim> *>  auxiliary_dofs;
-    std::vector<Term<dim> *>                    terms;
-    std::unique_ptr<Plan>                       cell_plan, face_plan;
+    const SplineDofHandler<dim>               &dofs;
+    const dealii::Quadrature<1>                quadrature;
+    std::shared_ptr<const NurbsGeometry<dim>>  geometry;
+    std::vector<const SplineDofHandler<dim> *> auxiliary_dofs;
+    std::vector<Term<dim> *>                   terms;
+    std::unique_ptr<Plan>                      cell_plan, face_plan;
   };
 } // namespace vesicle_iga

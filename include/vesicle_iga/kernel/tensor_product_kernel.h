@@ -35,8 +35,8 @@ namespace vesicle_iga
     /// Buffers reused from element to element (one per thread).
     struct Workspace
     {
-      std::array<std::vector<double>, dim + 1> stage;
-      std::vector<double>                      accumulated, product;
+      std::array<std::vector<double>, dim + 1>             stage;
+      std::vector<double>                                  accumulated, product;
       std::array<std::array<std::vector<double>, 16>, dim> products;
       std::array<unsigned int, dim>                        product_valid{};
     };

@@ -29,8 +29,8 @@ namespace vesicle_iga
   struct FieldInput
   {
     FieldSource  source;
-    unsigned int auxiliary; // which auxiliary field (source auxiliary)
-    unsigned int component; // flat component index of the layout
+    unsigned int auxiliary;  // which auxiliary field (source auxiliary)
+    unsigned int component;  // flat component index of the layout
     unsigned int derivative; // Derivative<dim> index (plain or combined)
     bool
     operator==(const FieldInput &o) const
@@ -180,13 +180,13 @@ namespace vesicle_iga
     double time = 0, time_step = 0;
 
     // Set by the assembler.
-    const double                              *data    = nullptr;
-    const unsigned int                        *input_map = nullptr;
-    std::size_t                                stride  = 0;
-    unsigned int                               n_points = 0;
-    const std::vector<dealii::Point<dim>>     *points  = nullptr;
-    const std::vector<dealii::Tensor<1, dim>> *normals = nullptr;
-    const std::vector<dealii::Tensor<2, dim>> *metrics = nullptr;
+    const double                              *data          = nullptr;
+    const unsigned int                        *input_map     = nullptr;
+    std::size_t                                stride        = 0;
+    unsigned int                               n_points      = 0;
+    const std::vector<dealii::Point<dim>>     *points        = nullptr;
+    const std::vector<dealii::Tensor<1, dim>> *normals       = nullptr;
+    const std::vector<dealii::Tensor<2, dim>> *metrics       = nullptr;
     int                                        face_number   = -1;
     unsigned int                               element_index = 0;
   };
@@ -225,8 +225,8 @@ namespace vesicle_iga
     // Set by the assembler.
     double             *residual_data = nullptr, *jacobian_data = nullptr;
     const unsigned int *residual_map = nullptr, *jacobian_map = nullptr;
-    std::size_t         stride       = 0;
-    bool        with_matrix = true, with_residual = true;
+    std::size_t         stride      = 0;
+    bool                with_matrix = true, with_residual = true;
   };
 
 
@@ -273,7 +273,8 @@ namespace vesicle_iga
     /// with an empty declaration whenever an assembler is set up: the same
     /// calls in the same order each time.
     virtual void
-    declare(TermDeclaration<dim> &declaration) = 0;
+    declare(TermDeclaration<dim> &declaration)
+      = 0;
     /// Add residual (and, if out.matrix(), Jacobian) coefficients at all
     /// points of the element or face.
     virtual void
@@ -295,7 +296,8 @@ namespace vesicle_iga
     virtual unsigned int
     n_values() const = 0;
     virtual void
-    declare(TermDeclaration<dim> &declaration) = 0;
+    declare(TermDeclaration<dim> &declaration)
+      = 0;
     /// sums[k] += sum_q f_k(q) JxW[q].
     virtual void
     integrate(const QuadratureInputs<dim> &in,

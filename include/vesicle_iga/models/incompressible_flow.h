@@ -163,24 +163,24 @@ namespace vesicle_iga
     void
     update_ghosted_solution();
 
-    const MPI_Comm                              comm;
-    const SplineSpace<dim>                      space;
-    PatchMesh<dim>                              patch_mesh;
-    SplineDofHandler<dim>                       dof_handler;
-    const FlowCoefficients<dim>                &coefficients;
-    const std::vector<VelocityCondition<dim>>   conditions;
-    const IncompressibleFlowParameters          parameters;
-    dealii::TimerOutput                        &timer;
-    dealii::types::global_dof_index             pinned_pressure;
-    dealii::AffineConstraints<double>           increments;
-    NavierStokesRBVMS<dim>                      rbvms;
-    RBVMSLumpedSchurOperators<dim>              lumped_schur;
+    const MPI_Comm                                           comm;
+    const SplineSpace<dim>                                   space;
+    PatchMesh<dim>                                           patch_mesh;
+    SplineDofHandler<dim>                                    dof_handler;
+    const FlowCoefficients<dim>                             &coefficients;
+    const std::vector<VelocityCondition<dim>>                conditions;
+    const IncompressibleFlowParameters                       parameters;
+    dealii::TimerOutput                                     &timer;
+    dealii::types::global_dof_index                          pinned_pressure;
+    dealii::AffineConstraints<double>                        increments;
+    NavierStokesRBVMS<dim>                                   rbvms;
+    RBVMSLumpedSchurOperators<dim>                           lumped_schur;
     std::vector<std::unique_ptr<WeakVelocityDirichlet<dim>>> weak_terms;
-    SystemAssembler<dim>                        assembler;
-    std::unique_ptr<SystemAssembler<dim>>       schur_assembler;
-    std::unique_ptr<JacobianSolver>             linear;
-    std::unique_ptr<GeneralizedAlphaStepper<dim>> stepper;
-    NewtonSolver                                newton;
-    dealii::TrilinosWrappers::MPI::Vector       ghosted_solution;
+    SystemAssembler<dim>                                     assembler;
+    std::unique_ptr<SystemAssembler<dim>>                    schur_assembler;
+    std::unique_ptr<JacobianSolver>                          linear;
+    std::unique_ptr<GeneralizedAlphaStepper<dim>>            stepper;
+    NewtonSolver                                             newton;
+    dealii::TrilinosWrappers::MPI::Vector                    ghosted_solution;
   };
 } // namespace vesicle_iga

@@ -32,14 +32,14 @@ namespace vesicle_iga
     double       M1 = 1, M2 = 1, constraint_tolerance = 1e-4;
     unsigned int max_alm_iterations = 20;
     /// staggered (spec 3.9) or fixed-point.
-    std::string  coupling              = "staggered";
-    double       fixed_point_tolerance = 1e-6;
-    unsigned int max_fixed_point_iterations = 10;
-    unsigned int quadrature_points          = 6;
-    GeneralizedAlphaParameters             time_integration;
-    NewtonParameters                       newton;
-    LinearSolverParameters                 solver, potential_solver;
-    ElectromechanicsMaterial               material;
+    std::string                coupling                   = "staggered";
+    double                     fixed_point_tolerance      = 1e-6;
+    unsigned int               max_fixed_point_iterations = 10;
+    unsigned int               quadrature_points          = 6;
+    GeneralizedAlphaParameters time_integration;
+    NewtonParameters           newton;
+    LinearSolverParameters     solver, potential_solver;
+    ElectromechanicsMaterial   material;
   };
 
 
@@ -59,10 +59,11 @@ namespace vesicle_iga
   class PhaseFieldFlow : public TimeDependentProblem, public Checkpointable
   {
   public:
-    PhaseFieldFlow(const SplineDofHandler<dim>     &dofs,
-                   const AffineConstraints<double> &increment_constraints,
-                   const PhaseFieldFlowParameters  &parameters,
-                   dealii::TimerOutput             &timer);
+    PhaseFieldFlow(
+      const SplineDofHandler<dim>             &dofs,
+      const dealii::AffineConstraints<double> &increment_constraints,
+      const PhaseFieldFlowParameters          &parameters,
+      dealii::TimerOutput                     &timer);
 
     /// phi(0) (owned layout): the targets V0 = V(phi_0), A0 = A(phi_0).
     void
@@ -200,35 +201,36 @@ namespace vesicle_iga
     constrained_step(const double dt);
     /// The inverse 2x2 Jacobian of (E21) from the linearised step.
     std::array<double, 4>
-    linearised_alm_inverse(const double dt, const std::array<double, 4> &fallback);
+    linearised_alm_inverse(const double                 dt,
+                           const std::array<double, 4> &fallback);
     void
     solve_potential(const dealii::TrilinosWrappers::MPI::Vector &phi_owned);
     dealii::TrilinosWrappers::MPI::Vector &
     ghost(const dealii::TrilinosWrappers::MPI::Vector &owned);
 
-    const SplineDofHandler<dim>                   &dofs;
-    const AffineConstraints<double>               &increment_constraints;
-    const PhaseFieldFlowParameters                 parameters;
-    dealii::TimerOutput                           &timer;
-    std::unique_ptr<ElectricPotential<dim>>        electric;
-    BendingEnergy<dim>                             bending;
-    std::vector<std::unique_ptr<Term<dim>>>        electric_terms;
-    AreaConstraint<dim>                            area;
-    VolumeConstraint<dim>                          volume;
-    RateTerm<dim>                                  rate;
+    const SplineDofHandler<dim>             &dofs;
+    const dealii::AffineConstraints<double> &increment_constraints;
+    const PhaseFieldFlowParameters           parameters;
+    dealii::TimerOutput                     &timer;
+    std::unique_ptr<ElectricPotential<dim>>  electric;
+    BendingEnergy<dim>                       bending;
+    std::vector<std::unique_ptr<Term<dim>>>  electric_terms;
+    AreaConstraint<dim>                      area;
+    VolumeConstraint<dim>                    volume;
+    RateTerm<dim>                            rate;
     /// The energies (bending first), each also an Integrand.
-    std::vector<Integrand<dim> *>                  energies;
-    std::vector<std::string>                       names;
-    SystemAssembler<dim>                           assembler;
-    std::unique_ptr<JacobianSolver>                linear;
-    std::unique_ptr<GeneralizedAlphaStepper<dim>>  stepper;
-    NewtonSolver                                   newton;
-    ModifiedALM                                    alm;
-    dealii::TrilinosWrappers::MPI::Vector          ghosted;
-    double                                         V0 = 0, A0 = 0;
-    Functionals                                    current, frozen;
-    unsigned int                                   potential_iterations = 0;
-    double                                         alm_alpha = 0, alm_beta = 0;
-    std::array<double, 4>                          alm_inverse{};
+    std::vector<Integrand<dim> *>                 energies;
+    std::vector<std::string>                      names;
+    SystemAssembler<dim>                          assembler;
+    std::unique_ptr<JacobianSolver>               linear;
+    std::unique_ptr<GeneralizedAlphaStepper<dim>> stepper;
+    NewtonSolver                                  newton;
+    ModifiedALM                                   alm;
+    dealii::TrilinosWrappers::MPI::Vector         ghosted;
+    double                                        V0 = 0, A0 = 0;
+    Functionals                                   current, frozen;
+    unsigned int                                  potential_iterations = 0;
+    double                                        alm_alpha = 0, alm_beta = 0;
+    std::array<double, 4>                         alm_inverse{};
   };
 } // namespace vesicle_iga

@@ -23,9 +23,9 @@ namespace vesicle_iga
    */
   template <int dim>
   void
-  scatter_natural(const SplineDofHandler<dim>   &dofs,
-                  const std::vector<double>     &natural,
-                  TrilinosWrappers::MPI::Vector &owned);
+  scatter_natural(const SplineDofHandler<dim>           &dofs,
+                  const std::vector<double>             &natural,
+                  dealii::TrilinosWrappers::MPI::Vector &owned);
 
   /**
    * The complete natural coefficient vector of @p v on every rank (n_components
@@ -33,6 +33,6 @@ namespace vesicle_iga
    */
   template <int dim>
   std::vector<double>
-  gather_natural(const SplineDofHandler<dim>         &dofs,
-                 const TrilinosWrappers::MPI::Vector &v);
+  gather_natural(const SplineDofHandler<dim>                 &dofs,
+                 const dealii::TrilinosWrappers::MPI::Vector &v);
 } // namespace vesicle_iga

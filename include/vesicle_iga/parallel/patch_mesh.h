@@ -27,7 +27,7 @@ namespace vesicle_iga
               const SplineSpace<dim>                   &space,
               std::shared_ptr<const NurbsGeometry<dim>> geometry);
 
-    const parallel::shared::Triangulation<dim> &
+    const dealii::parallel::shared::Triangulation<dim> &
     triangulation() const
     {
       return tria;
@@ -38,7 +38,7 @@ namespace vesicle_iga
       return tria.get_communicator();
     }
     /// The MPI rank that owns element e.
-    types::subdomain_id
+    dealii::types::subdomain_id
     element_owner(const unsigned int e) const
     {
       return owner[e];
@@ -55,8 +55,8 @@ namespace vesicle_iga
     max_cell_diameter() const;
 
   private:
-    parallel::shared::Triangulation<dim> tria;
-    std::vector<types::subdomain_id>     owner;
-    std::vector<unsigned int>            owned_elements;
+    dealii::parallel::shared::Triangulation<dim> tria;
+    std::vector<dealii::types::subdomain_id>     owner;
+    std::vector<unsigned int>                    owned_elements;
   };
 } // namespace vesicle_iga

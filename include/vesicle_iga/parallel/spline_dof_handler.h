@@ -32,7 +32,8 @@ namespace vesicle_iga
   class SplineDofHandler
   {
   public:
-    SplineDofHandler(const PatchMesh<dim> &mesh, const FieldLayout<dim> &layout);
+    SplineDofHandler(const PatchMesh<dim>   &mesh,
+                     const FieldLayout<dim> &layout);
     /// One field of @p n_components components on @p space.
     SplineDofHandler(const PatchMesh<dim>   &mesh,
                      const SplineSpace<dim> &space,
@@ -92,8 +93,9 @@ namespace vesicle_iga
     /// Unknowns of element e; local index offset(k) + j for component k of
     /// the j-th local basis function of its space.
     void
-    element_dof_indices(const unsigned int                            e,
-                        std::vector<dealii::types::global_dof_index> &indices) const;
+    element_dof_indices(
+      const unsigned int                            e,
+      std::vector<dealii::types::global_dof_index> &indices) const;
     /// Local offset of component k in element_dof_indices().
     unsigned int
     local_offset(const unsigned int k) const
@@ -115,8 +117,8 @@ namespace vesicle_iga
     void
     setup();
 
-    const PatchMesh<dim>   &mesh;
-    const FieldLayout<dim>  layout;
+    const PatchMesh<dim>  &mesh;
+    const FieldLayout<dim> layout;
     struct SpaceNumbering
     {
       /// Global index of component slot 0 of each basis function.

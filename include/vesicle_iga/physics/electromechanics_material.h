@@ -7,7 +7,6 @@
 
 namespace vesicle_iga
 {
-  using namespace dealii;
 
   /**
    * The electric data of spec Part E (section 3.10) and the one place where
@@ -33,9 +32,9 @@ namespace vesicle_iga
          electrolyte_dielectric = true;
 
     static void
-    declare(ParameterHandler &prm);
+    declare(dealii::ParameterHandler &prm);
     void
-    parse(ParameterHandler &prm, const unsigned int dim);
+    parse(dealii::ParameterHandler &prm, const unsigned int dim);
 
     /// Whether any electric term is active (E0 > 0).
     bool

@@ -6,7 +6,6 @@
 
 namespace vesicle_iga
 {
-  using namespace dealii;
 
   /**
    * Signed distance from y to the ellipsoid (ellipse in 2D) with semi-axes
@@ -20,6 +19,6 @@ namespace vesicle_iga
    */
   template <int dim>
   double
-  signed_distance_to_ellipsoid(const Point<dim>              &y,
+  signed_distance_to_ellipsoid(const dealii::Point<dim>      &y,
                                const std::array<double, dim> &a);
 } // namespace vesicle_iga

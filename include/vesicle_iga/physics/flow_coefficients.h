@@ -38,8 +38,8 @@ namespace vesicle_iga
     set_time(const double /*t*/)
     {}
     virtual void
-    evaluate(const QuadratureInputs<dim> &in,
-             std::vector<double>         &mu,
+    evaluate(const QuadratureInputs<dim>         &in,
+             std::vector<double>                 &mu,
              std::vector<dealii::Tensor<1, dim>> &grad_mu) const = 0;
   };
 
@@ -134,8 +134,8 @@ namespace vesicle_iga
   struct FlowCoefficients
   {
     double                               reynolds_number = 1;
-    std::shared_ptr<ViscosityModel<dim>> viscosity =
-      std::make_shared<ConstantViscosity<dim>>();
+    std::shared_ptr<ViscosityModel<dim>> viscosity
+      = std::make_shared<ConstantViscosity<dim>>();
     BodyForce<dim> body_force;
     /// Whether the terms need the quadrature points (formulas in x).
     bool

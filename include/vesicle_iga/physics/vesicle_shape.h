@@ -12,7 +12,6 @@
 
 namespace vesicle_iga
 {
-  using namespace dealii;
 
   /**
    * The initial vesicle of spec Part E: a sphere (circle) or an ellipsoid
@@ -25,26 +24,26 @@ namespace vesicle_iga
   struct VesicleShape
   {
     std::string             shape = "sphere";
-    Point<dim>              center;
+    dealii::Point<dim>      center;
     std::array<double, dim> semi_axes{};
 
     static void
-    declare(ParameterHandler &prm);
+    declare(dealii::ParameterHandler &prm);
     void
-    parse(ParameterHandler &prm);
+    parse(dealii::ParameterHandler &prm);
 
     /// Signed distance to the surface, positive outside.
     double
-    signed_distance(const Point<dim> &x) const;
+    signed_distance(const dealii::Point<dim> &x) const;
 
     /// Refuses a shape whose gap to a face of the box [lower, upper] is
     /// below 2.08 epsilon (phi_0 < 0.9 where (E15) sets phi = 1) and warns
     /// below 5.4 epsilon (phi_0 < 0.999).
     void
-    check_fits(const Point<dim>         &lower,
-               const Point<dim>         &upper,
-               const double              epsilon,
-               const ConditionalOStream &out) const;
+    check_fits(const dealii::Point<dim>         &lower,
+               const dealii::Point<dim>         &upper,
+               const double                      epsilon,
+               const dealii::ConditionalOStream &out) const;
 
     /// Coefficients (natural numbering) of the spline interpolant at the
     /// Greville points of phi_0 = tanh(d / (sqrt2 epsilon)) (E1).

@@ -11,7 +11,6 @@
 
 namespace vesicle_iga
 {
-  using namespace dealii;
 
   /**
    * Error norms of a sequence of refinements for several degrees: printed
@@ -40,9 +39,9 @@ namespace vesicle_iga
     /// What every convergence study ends with: the table on @p out if it is
     /// active, directory/convergence.csv written by rank 0 of @p comm.
     void
-    report(const ConditionalOStream &out,
-           const MPI_Comm            comm,
-           const std::string        &directory) const;
+    report(const dealii::ConditionalOStream &out,
+           const MPI_Comm                    comm,
+           const std::string                &directory) const;
 
 
   private:

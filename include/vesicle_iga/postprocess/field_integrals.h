@@ -40,7 +40,7 @@ namespace vesicle_iga
   /// Local coefficients of an element, one vector per component.
   template <int dim>
   void
-  get_element_coefficients(const SplineDofHandler<dim>                 &dof_handler,
+  get_element_coefficients(const SplineDofHandler<dim> &dof_handler,
                            const dealii::TrilinosWrappers::MPI::Vector &ghosted,
                            const unsigned int                           element,
                            std::vector<std::vector<double>> &coefficients);

@@ -8,7 +8,6 @@
 
 namespace vesicle_iga
 {
-  using namespace dealii;
 
   /**
    * One field of a computed solution sampled at equidistant points of a
@@ -19,20 +18,20 @@ namespace vesicle_iga
    */
   struct LineSample
   {
-    std::string  name;       // file name without .csv; empty: none
-    Point<3>     start, end; // only the first dim coordinates are used
-    unsigned int points     = 101;
-    unsigned int coordinate = 1; // the abscissa written: 0 x, 1 y, 2 z
-    unsigned int component  = 0; // of the solution
-    std::string  coordinate_name, field_name;
-    std::string  reference;              // "" or the name of built-in data
-    bool         print_integral = false; // print the integral along the line
+    std::string      name;       // file name without .csv; empty: none
+    dealii::Point<3> start, end; // only the first dim coordinates are used
+    unsigned int     points     = 101;
+    unsigned int     coordinate = 1; // the abscissa written: 0 x, 1 y, 2 z
+    unsigned int     component  = 0; // of the solution
+    std::string      coordinate_name, field_name;
+    std::string      reference;  // "" or the name of built-in data
+    bool print_integral = false; // print the integral along the line
 
     static void
-    declare(ParameterHandler &prm, const std::string &field_names);
+    declare(dealii::ParameterHandler &prm, const std::string &field_names);
     /// Reads one "Line sample" subsection; @p dim for the checks.
     void
-    parse(ParameterHandler               &prm,
+    parse(dealii::ParameterHandler       &prm,
           const std::string              &parameter_prefix,
           const std::vector<std::string> &field_names,
           const unsigned int              dim);

@@ -6,7 +6,6 @@
 
 namespace vesicle_iga
 {
-  using namespace dealii;
 
   /**
    * u(x) = prod_d sin(k_d x_d + phi_d): smooth, non-zero on every face,
@@ -15,7 +14,7 @@ namespace vesicle_iga
    * biharmonic verification studies.
    */
   template <int dim>
-  class ProductSineSolution : public Function<dim>
+  class ProductSineSolution : public dealii::Function<dim>
   {
   public:
     ProductSineSolution(const std::array<double, dim> &k,
@@ -25,19 +24,21 @@ namespace vesicle_iga
     {}
 
     double
-    value(const Point<dim> &x, const unsigned int = 0) const override;
-    Tensor<1, dim>
-    gradient(const Point<dim> &x, const unsigned int = 0) const override;
-    SymmetricTensor<2, dim>
-    hessian(const Point<dim> &x, const unsigned int = 0) const override;
+    value(const dealii::Point<dim> &x, const unsigned int = 0) const override;
+    dealii::Tensor<1, dim>
+    gradient(const dealii::Point<dim> &x,
+             const unsigned int = 0) const override;
+    dealii::SymmetricTensor<2, dim>
+    hessian(const dealii::Point<dim> &x, const unsigned int = 0) const override;
 
     double
-    laplacian(const Point<dim> &x, const unsigned int = 0) const override
+    laplacian(const dealii::Point<dim> &x,
+              const unsigned int = 0) const override
     {
       return -k_squared() * value(x);
     }
     double
-    bilaplacian(const Point<dim> &x) const
+    bilaplacian(const dealii::Point<dim> &x) const
     {
       return k_squared() * k_squared() * value(x);
     }

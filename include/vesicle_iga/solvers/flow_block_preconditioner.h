@@ -15,7 +15,6 @@
 
 namespace vesicle_iga
 {
-  using namespace dealii;
 
   /**
    * Block upper-triangular preconditioner of the RBVMS velocity-pressure
@@ -67,36 +66,36 @@ namespace vesicle_iga
     /// The lumped velocity mass (velocity entries) and lumped viscous
     /// pressure mass (pressure entries) of the coming matrix.
     void
-    set_lumped_operators(const TrilinosWrappers::MPI::Vector &lumped);
+    set_lumped_operators(const dealii::TrilinosWrappers::MPI::Vector &lumped);
     void
-    initialize(const TrilinosWrappers::SparseMatrix &matrix) override;
+    initialize(const dealii::TrilinosWrappers::SparseMatrix &matrix) override;
     void
-    vmult(TrilinosWrappers::MPI::Vector       &dst,
-          const TrilinosWrappers::MPI::Vector &src) const override;
+    vmult(dealii::TrilinosWrappers::MPI::Vector       &dst,
+          const dealii::TrilinosWrappers::MPI::Vector &src) const override;
     std::string
     description() const override;
 
   private:
     void
-    split(const TrilinosWrappers::MPI::Vector &full,
-          TrilinosWrappers::MPI::Vector       &velocity,
-          TrilinosWrappers::MPI::Vector       &pressure) const;
+    split(const dealii::TrilinosWrappers::MPI::Vector &full,
+          dealii::TrilinosWrappers::MPI::Vector       &velocity,
+          dealii::TrilinosWrappers::MPI::Vector       &pressure) const;
 
     const unsigned int                      dim;
     const FlowBlockPreconditionerParameters prm;
 
-    IndexSet velocity_owned, pressure_owned;
+    dealii::IndexSet velocity_owned, pressure_owned;
     // For each locally owned entry of the monolithic vector: its position
     // in the local part of the velocity (>= 0) or pressure (< 0: -1 - k)
     // vector.
     std::vector<long> local_position;
 
-    TrilinosWrappers::MPI::Vector lumped;
+    dealii::TrilinosWrappers::MPI::Vector lumped;
     std::vector<double> inverse_viscous_mass; // local pressure entries
-    TrilinosWrappers::SparseMatrix        A, B, D, S;
-    TrilinosWrappers::PreconditionAMG     A_inverse, S_inverse;
-    std::unique_ptr<MatrixPreconditioner> velocity_preconditioner;
-    mutable TrilinosWrappers::MPI::Vector u, p, r_u, r_p, tmp_u;
-    bool                                  cahouet_chabard;
+    dealii::TrilinosWrappers::SparseMatrix        A, B, D, S;
+    dealii::TrilinosWrappers::PreconditionAMG     A_inverse, S_inverse;
+    std::unique_ptr<MatrixPreconditioner>         velocity_preconditioner;
+    mutable dealii::TrilinosWrappers::MPI::Vector u, p, r_u, r_p, tmp_u;
+    bool                                          cahouet_chabard;
   };
 } // namespace vesicle_iga

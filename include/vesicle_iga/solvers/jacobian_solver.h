@@ -39,10 +39,11 @@ namespace vesicle_iga
     };
 
     /// @p timer (optional): sections "preconditioner" and "linear solve".
-    JacobianSolver(const LinearSolverParameters              &parameters,
-                   const dealii::AffineConstraints<double>   &increment_constraints,
-                   const dealii::TrilinosWrappers::SparsityPattern &sparsity,
-                   dealii::TimerOutput                       *timer = nullptr);
+    JacobianSolver(
+      const LinearSolverParameters                    &parameters,
+      const dealii::AffineConstraints<double>         &increment_constraints,
+      const dealii::TrilinosWrappers::SparsityPattern &sparsity,
+      dealii::TimerOutput                             *timer = nullptr);
 
     /// A preconditioner of the caller's (required by the gmres-mg, cg-mg and
     /// fgmres-block methods), its rebuild policy and what must happen
@@ -50,7 +51,7 @@ namespace vesicle_iga
     void
     set_preconditioner(std::unique_ptr<MatrixPreconditioner> preconditioner,
                        const Reuse                           reuse,
-                       std::function<void()> before_setup = {});
+                       std::function<void()>                 before_setup = {});
 
     dealii::TrilinosWrappers::SparseMatrix &
     matrix()

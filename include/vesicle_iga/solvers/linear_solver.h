@@ -12,7 +12,6 @@
 
 namespace vesicle_iga
 {
-  using namespace dealii;
 
   /**
    * Krylov method and preconditioner for a symmetric positive definite
@@ -48,9 +47,9 @@ namespace vesicle_iga
     std::string schur_approximation = "cahouet-chabard";
 
     static void
-    declare(ParameterHandler &prm);
+    declare(dealii::ParameterHandler &prm);
     void
-    parse(ParameterHandler &prm);
+    parse(dealii::ParameterHandler &prm);
   };
 
   struct LinearSolverParameters
@@ -75,23 +74,23 @@ namespace vesicle_iga
     }
 
     static void
-    declare(ParameterHandler  &prm,
-            const std::string &default_method,
-            const std::string &default_tolerance = "1e-12",
-            const std::string &default_smoother  = "ssor",
-            const std::string &default_sweeps    = "2");
+    declare(dealii::ParameterHandler &prm,
+            const std::string        &default_method,
+            const std::string        &default_tolerance = "1e-12",
+            const std::string        &default_smoother  = "ssor",
+            const std::string        &default_sweeps    = "2");
     void
-    parse(ParameterHandler &prm);
+    parse(dealii::ParameterHandler &prm);
 
     /// The flow solver's choice: gmres-ilu, gmres-amg, direct or
     /// fgmres-block, with the Block preconditioner subsection instead of
     /// the Multigrid one.
     static void
-    declare_flow(ParameterHandler  &prm,
-                 const std::string &default_method,
-                 const std::string &default_tolerance);
+    declare_flow(dealii::ParameterHandler &prm,
+                 const std::string        &default_method,
+                 const std::string        &default_tolerance);
     void
-    parse_flow(ParameterHandler &prm);
+    parse_flow(dealii::ParameterHandler &prm);
   };
 
   struct LinearSolveResult
@@ -105,10 +104,10 @@ namespace vesicle_iga
   /// initialized by the caller (with A, or with an earlier matrix when the
   /// caller reuses it).
   LinearSolveResult
-  solve_linear_system(const LinearSolverParameters         &parameters,
-                      const TrilinosWrappers::SparseMatrix &A,
-                      TrilinosWrappers::MPI::Vector        &x,
-                      const TrilinosWrappers::MPI::Vector  &b,
-                      const AffineConstraints<double>      &constraints,
+  solve_linear_system(const LinearSolverParameters                 &parameters,
+                      const dealii::TrilinosWrappers::SparseMatrix &A,
+                      dealii::TrilinosWrappers::MPI::Vector        &x,
+                      const dealii::TrilinosWrappers::MPI::Vector  &b,
+                      const dealii::AffineConstraints<double>      &constraints,
                       MatrixPreconditioner *caller_preconditioner = nullptr);
 } // namespace vesicle_iga

@@ -24,9 +24,11 @@ namespace vesicle_iga
     virtual void
     assemble(const dealii::TrilinosWrappers::MPI::Vector &x,
              dealii::TrilinosWrappers::MPI::Vector       *residual,
-             const bool                                   jacobian) = 0;
+             const bool                                   jacobian)
+      = 0;
     virtual JacobianSolver &
-    jacobian_solver() = 0;
+    jacobian_solver()
+      = 0;
   };
 
 
@@ -55,7 +57,7 @@ namespace vesicle_iga
   {
     unsigned int iterations        = 0; // corrections
     unsigned int krylov_iterations = 0;
-    double       initial_residual  = 0, residual = 0;
+    double       initial_residual = 0, residual = 0;
     /// Relative residual of the last Krylov solve.
     double linear_residual = 0;
   };
@@ -79,7 +81,8 @@ namespace vesicle_iga
     {}
 
     NewtonReport
-    solve(NonlinearProblem &problem, dealii::TrilinosWrappers::MPI::Vector &x) const;
+    solve(NonlinearProblem                      &problem,
+          dealii::TrilinosWrappers::MPI::Vector &x) const;
 
     /// A linear problem: one residual and Jacobian pass, one correction.
     NewtonReport

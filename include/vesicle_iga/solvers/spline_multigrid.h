@@ -14,7 +14,6 @@
 
 namespace vesicle_iga
 {
-  using namespace dealii;
 
   /**
    * A preconditioner that is rebuilt for every new matrix.
@@ -24,11 +23,11 @@ namespace vesicle_iga
   public:
     virtual ~MatrixPreconditioner() = default;
     virtual void
-    initialize(const TrilinosWrappers::SparseMatrix &matrix)
+    initialize(const dealii::TrilinosWrappers::SparseMatrix &matrix)
       = 0;
     virtual void
-    vmult(TrilinosWrappers::MPI::Vector       &dst,
-          const TrilinosWrappers::MPI::Vector &src) const = 0;
+    vmult(dealii::TrilinosWrappers::MPI::Vector       &dst,
+          const dealii::TrilinosWrappers::MPI::Vector &src) const = 0;
     /// One line for logs: levels, unknowns per level, smoother.
     virtual std::string
     description() const = 0;
@@ -42,11 +41,11 @@ namespace vesicle_iga
     double       ssor_relaxation = 1.0;
 
     static void
-    declare(ParameterHandler  &prm,
-            const std::string &default_smoother = "ssor",
-            const std::string &default_sweeps   = "2");
+    declare(dealii::ParameterHandler &prm,
+            const std::string        &default_smoother = "ssor",
+            const std::string        &default_sweeps   = "2");
     void
-    parse(ParameterHandler &prm);
+    parse(dealii::ParameterHandler &prm);
   };
 
   /**
@@ -74,9 +73,9 @@ namespace vesicle_iga
   class SplineMultigrid : public MatrixPreconditioner
   {
   public:
-    SplineMultigrid(const SplineDofHandler<dim>     &dofs,
-                    const AffineConstraints<double> &zero_constraints,
-                    const SplineMultigridParameters &parameters);
+    SplineMultigrid(const SplineDofHandler<dim>             &dofs,
+                    const dealii::AffineConstraints<double> &zero_constraints,
+                    const SplineMultigridParameters         &parameters);
     /// A vector-valued field of @p n_components components on the spline
     /// space of @p dofs: @p unknown(basis, component) gives the matrix row
     /// of each (natural basis index, component), @p owned the rows of this
@@ -86,18 +85,18 @@ namespace vesicle_iga
     SplineMultigrid(
       const SplineDofHandler<dim> &dofs,
       const unsigned int           n_components,
-      const std::function<types::global_dof_index(unsigned int, unsigned int)>
-                                                         &unknown,
-      const IndexSet                                     &owned,
-      const std::function<bool(types::global_dof_index)> &constrained,
-      const SplineMultigridParameters                    &parameters);
+      const std::function<
+        dealii::types::global_dof_index(unsigned int, unsigned int)> &unknown,
+      const dealii::IndexSet                                         &owned,
+      const std::function<bool(dealii::types::global_dof_index)> &constrained,
+      const SplineMultigridParameters                            &parameters);
     ~SplineMultigrid() override;
 
     void
-    initialize(const TrilinosWrappers::SparseMatrix &matrix) override;
+    initialize(const dealii::TrilinosWrappers::SparseMatrix &matrix) override;
     void
-    vmult(TrilinosWrappers::MPI::Vector       &dst,
-          const TrilinosWrappers::MPI::Vector &src) const override;
+    vmult(dealii::TrilinosWrappers::MPI::Vector       &dst,
+          const dealii::TrilinosWrappers::MPI::Vector &src) const override;
     std::string
     description() const override;
 
@@ -110,16 +109,17 @@ namespace vesicle_iga
   private:
     struct Level;
     void
-    setup(const SplineSpace<dim> &space,
-          const unsigned int      n_components,
-          const std::function<types::global_dof_index(unsigned int,
-                                                      unsigned int)> &unknown,
-          const IndexSet                                             &owned,
-          const std::function<bool(types::global_dof_index)> &constrained);
+    setup(
+      const SplineSpace<dim> &space,
+      const unsigned int      n_components,
+      const std::function<
+        dealii::types::global_dof_index(unsigned int, unsigned int)> &unknown,
+      const dealii::IndexSet                                         &owned,
+      const std::function<bool(dealii::types::global_dof_index)> &constrained);
     void
-    v_cycle(const unsigned int                   l,
-            TrilinosWrappers::MPI::Vector       &x,
-            const TrilinosWrappers::MPI::Vector &b) const;
+    v_cycle(const unsigned int                           l,
+            dealii::TrilinosWrappers::MPI::Vector       &x,
+            const dealii::TrilinosWrappers::MPI::Vector &b) const;
 
     SplineMultigridParameters           prm;
     MPI_Comm                            communicator;

@@ -28,13 +28,13 @@ namespace vesicle_iga
     std::vector<bool>   periodic;
 
     static void
-    declare(ParameterHandler  &prm,
-            const std::string &default_lower,
-            const std::string &default_upper,
-            const std::string &default_elements);
+    declare(dealii::ParameterHandler &prm,
+            const std::string        &default_lower,
+            const std::string        &default_upper,
+            const std::string        &default_elements);
     /// Reads and checks the entries (InputError naming the parameter).
     void
-    parse(ParameterHandler &prm, const unsigned int dim);
+    parse(dealii::ParameterHandler &prm, const unsigned int dim);
 
     template <int dim>
     SplineSpace<dim>

@@ -20,16 +20,16 @@ namespace vesicle_iga
   class NurbsGeometry
   {
   public:
-    NurbsGeometry(const SplineSpace<dim>        &space,
-                  const std::vector<Point<dim>> &control_points,
-                  const std::vector<double>     &weights);
+    NurbsGeometry(const SplineSpace<dim>                &space,
+                  const std::vector<dealii::Point<dim>> &control_points,
+                  const std::vector<double>             &weights);
 
     const SplineSpace<dim> &
     space() const
     {
       return spline_space;
     }
-    const Point<dim> &
+    const dealii::Point<dim> &
     control_point(const unsigned int i) const
     {
       return points[i];
@@ -46,8 +46,8 @@ namespace vesicle_iga
     }
 
     /// x(xi) by Cox-de Boor evaluation of the homogeneous coordinates.
-    Point<dim>
-    point(const Point<dim> &xi) const;
+    dealii::Point<dim>
+    point(const dealii::Point<dim> &xi) const;
 
     /**
      * The same geometry on a finer space (knot insertion, degree elevation
@@ -60,9 +60,9 @@ namespace vesicle_iga
     refined_to(const SplineSpace<dim> &finer) const;
 
   private:
-    SplineSpace<dim>        spline_space;
-    std::vector<Point<dim>> points;
-    std::vector<double>     weights_;
+    SplineSpace<dim>                spline_space;
+    std::vector<dealii::Point<dim>> points;
+    std::vector<double>             weights_;
     /// (w P, w) per basis function, computed once: point() is called per
     /// mesh vertex and per boundary interpolation point.
     std::vector<double> homogeneous;

@@ -50,7 +50,7 @@ namespace vesicle_iga
      */
     SplineCellValues(const SplineSpace<dim>                   &space,
                      std::shared_ptr<const NurbsGeometry<dim>> geometry,
-                     const Quadrature<1>                      &quadrature_1d,
+                     const dealii::Quadrature<1>              &quadrature_1d,
                      const unsigned int                        max_derivative,
                      const bool with_shape_tables = true);
 
@@ -91,17 +91,17 @@ namespace vesicle_iga
     {
       return values[q * n_local + i];
     }
-    const Tensor<1, dim> &
+    const dealii::Tensor<1, dim> &
     shape_grad(const unsigned int i, const unsigned int q) const
     {
       return grads[q * n_local + i];
     }
-    const Tensor<2, dim> &
+    const dealii::Tensor<2, dim> &
     shape_hessian(const unsigned int i, const unsigned int q) const
     {
       return hessians[q * n_local + i];
     }
-    const Tensor<3, dim> &
+    const dealii::Tensor<3, dim> &
     shape_3rd_derivative(const unsigned int i, const unsigned int q) const
     {
       return thirds[q * n_local + i];
@@ -117,19 +117,19 @@ namespace vesicle_iga
     {
       return jxw[q];
     }
-    const Point<dim> &
+    const dealii::Point<dim> &
     quadrature_point(const unsigned int q) const
     {
       return points[q];
     }
     /// Parametric point of quadrature point q.
-    const Point<dim> &
+    const dealii::Point<dim> &
     parametric_point(const unsigned int q) const
     {
       return xi[q];
     }
     /// Outward unit normal (faces only).
-    const Tensor<1, dim> &
+    const dealii::Tensor<1, dim> &
     normal_vector(const unsigned int q) const
     {
       return normals[q];
@@ -141,12 +141,13 @@ namespace vesicle_iga
     tensor_product_factors() const
     {
       Assert(!geometry,
-             ExcMessage("The basis factors only without a geometry map."));
+             dealii::ExcMessage(
+               "The basis factors only without a geometry map."));
       return univariate;
     }
 
     /// Element metric tensor G of spec eq. (N1), parent element [-1,1]^d.
-    const Tensor<2, dim> &
+    const dealii::Tensor<2, dim> &
     metric_tensor(const unsigned int q) const
     {
       return metric[q];
@@ -160,9 +161,9 @@ namespace vesicle_iga
     /// basis function, ordered as basis_indices()).
     double
     value(const std::vector<double> &local, const unsigned int q) const;
-    Tensor<1, dim>
+    dealii::Tensor<1, dim>
     gradient(const std::vector<double> &local, const unsigned int q) const;
-    Tensor<2, dim>
+    dealii::Tensor<2, dim>
     hessian(const std::vector<double> &local, const unsigned int q) const;
 
   private:
@@ -179,6 +180,29 @@ namespace vesicle_iga
             const std::array<const BernsteinTable *, dim>      &tables,
             const std::array<const std::vector<double> *, dim> &weights,
             const int                                           face);
+    /// The univariate B-spline derivatives N = C B / h^r of the element.
+    void
+    compute_univariate(const std::array<const BernsteinTable *, dim>      &tab,
+                       const std::array<const std::vector<double> *, dim> &wts,
+                       const int face);
+    /// Parametric derivatives (orders 0..3) of the tensor-product basis at
+    /// the point with multi-index @p qm into v, g, H, T.
+    void
+    parametric_derivatives(const std::array<unsigned int, dim> &qm);
+    /// The rational basis R_j = w_j N_j / W by the quotient rule (order 3),
+    /// in place on v, g, H, T.
+    void
+    apply_weights();
+    /// The physical derivatives at point q from the parametric ones through
+    /// the geometry map (chain rule up to third order); returns J^{-1} and
+    /// det J.
+    double
+    map_to_physical(const unsigned int q, dealii::Tensor<2, dim> &Jinv);
+    /// Per-point scratch: parametric derivatives of the local basis.
+    std::vector<double>                 v;
+    std::vector<dealii::Tensor<1, dim>> g;
+    std::vector<dealii::Tensor<2, dim>> H;
+    std::vector<dealii::Tensor<3, dim>> T;
 
     const SplineSpace<dim>                   &space;
     std::shared_ptr<const NurbsGeometry<dim>> geometry;
@@ -197,13 +221,13 @@ namespace vesicle_iga
     unsigned int              current_element = 0;
     std::vector<unsigned int> indices;
 
-    std::vector<double>         values;
-    std::vector<Tensor<1, dim>> grads;
-    std::vector<Tensor<2, dim>> hessians;
-    std::vector<Tensor<3, dim>> thirds;
-    std::vector<double>         jxw;
-    std::vector<Point<dim>>     points, xi;
-    std::vector<Tensor<1, dim>> normals;
-    std::vector<Tensor<2, dim>> metric;
+    std::vector<double>                 values;
+    std::vector<dealii::Tensor<1, dim>> grads;
+    std::vector<dealii::Tensor<2, dim>> hessians;
+    std::vector<dealii::Tensor<3, dim>> thirds;
+    std::vector<double>                 jxw;
+    std::vector<dealii::Point<dim>>     points, xi;
+    std::vector<dealii::Tensor<1, dim>> normals;
+    std::vector<dealii::Tensor<2, dim>> metric;
   };
 } // namespace vesicle_iga

@@ -9,7 +9,6 @@
 
 namespace vesicle_iga
 {
-  using namespace dealii;
 
   /**
    * The tensor-product spline space S = S_1 x ... x S_dim over the
@@ -70,17 +69,17 @@ namespace vesicle_iga
                           std::vector<unsigned int> &indices) const;
 
     /// Lower corner and lengths of element e in parametric coordinates.
-    Point<dim>
+    dealii::Point<dim>
     element_lower_corner(const unsigned int e) const;
-    Tensor<1, dim>
+    dealii::Tensor<1, dim>
     element_lengths(const unsigned int e) const;
 
     /// The element that contains the parametric point xi.
     unsigned int
-    find_element(const Point<dim> &xi) const;
+    find_element(const dealii::Point<dim> &xi) const;
 
     /// Greville point of basis function i (tensor of univariate abscissae).
-    Point<dim>
+    dealii::Point<dim>
     greville_point(const unsigned int i) const;
 
     /// Whether element e touches the boundary face with deal.II face number
@@ -103,7 +102,7 @@ namespace vesicle_iga
     void
     evaluate(const std::vector<double> &coefficients,
              const unsigned int         n_components,
-             const Point<dim>          &xi,
+             const dealii::Point<dim>  &xi,
              std::vector<double>       &values) const;
 
     /// Same knot vectors in every direction?

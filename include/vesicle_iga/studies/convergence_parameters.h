@@ -7,7 +7,6 @@
 
 namespace vesicle_iga
 {
-  using namespace dealii;
 
   /// Degrees, continuity and refinement levels of a convergence study.
   struct ConvergenceParameters
@@ -20,12 +19,12 @@ namespace vesicle_iga
     bool                      write_vtu;
 
     static void
-    declare(ParameterHandler  &prm,
-            const std::string &default_degrees,
-            const std::string &default_refinements);
+    declare(dealii::ParameterHandler &prm,
+            const std::string        &default_degrees,
+            const std::string        &default_refinements);
     /// @p min_continuity: the smoothness the equation needs (1 for
     /// fourth-order problems in primal form).
     void
-    parse(ParameterHandler &prm, const unsigned int min_continuity);
+    parse(dealii::ParameterHandler &prm, const unsigned int min_continuity);
   };
 } // namespace vesicle_iga

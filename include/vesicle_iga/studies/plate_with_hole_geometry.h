@@ -20,10 +20,10 @@ namespace vesicle_iga
                    const double nu,
                    const double Tx,
                    const double R);
-    SymmetricTensor<2, 2>
-    stress(const Point<2> &x) const;
-    Tensor<1, 2>
-    displacement(const Point<2> &x) const;
+    dealii::SymmetricTensor<2, 2>
+    stress(const dealii::Point<2> &x) const;
+    dealii::Tensor<1, 2>
+    displacement(const dealii::Point<2> &x) const;
 
   private:
     double E, nu, Tx, R;

@@ -13,7 +13,6 @@
 
 namespace vesicle_iga
 {
-  using namespace dealii;
 
 
   /// A study: what one .prm file runs (set Study = <name>).
@@ -30,10 +29,11 @@ namespace vesicle_iga
   /// its parameter declarations and its factory.
   struct StudyDescription
   {
-    std::string                             name;
-    std::string                             summary;
-    std::function<void(ParameterHandler &)> declare_parameters;
-    std::function<std::unique_ptr<Study>(ParameterHandler &, RunContext &)>
+    std::string                                     name;
+    std::string                                     summary;
+    std::function<void(dealii::ParameterHandler &)> declare_parameters;
+    std::function<std::unique_ptr<Study>(dealii::ParameterHandler &,
+                                         RunContext &)>
       create;
   };
 

@@ -60,11 +60,11 @@ namespace vesicle_iga
     }
 
   private:
-    const unsigned int                   psi, phase_field;
-    const ElectromechanicsMaterial      &material;
-    InputHandle                          phi;
-    std::array<InputHandle, dim>         gradient;
-    std::array<ResidualHandle, dim>      residual;
-    std::array<JacobianHandle, dim>      jacobian;
+    const unsigned int              psi, phase_field;
+    const ElectromechanicsMaterial &material;
+    InputHandle                     phi;
+    std::array<InputHandle, dim>    gradient;
+    std::array<ResidualHandle, dim> residual;
+    std::array<JacobianHandle, dim> jacobian;
   };
 } // namespace vesicle_iga

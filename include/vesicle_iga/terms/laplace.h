@@ -104,8 +104,8 @@ namespace vesicle_iga
   {
   public:
     NeumannTerm(
-      const unsigned int                                                 u,
-      std::function<bool(unsigned int, const dealii::Point<dim> &)>      where,
+      const unsigned int                                                u,
+      std::function<bool(unsigned int, const dealii::Point<dim> &)>     where,
       std::function<dealii::Tensor<1, dim>(const dealii::Point<dim> &)> flux)
       : u(u)
       , where(where)

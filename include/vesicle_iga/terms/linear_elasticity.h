@@ -65,9 +65,9 @@ namespace vesicle_iga
   class TractionTerm : public Term<dim>
   {
   public:
-    using TractionFunction =
-      std::function<dealii::Tensor<1, dim>(const dealii::Point<dim> &,
-                                           const dealii::Tensor<1, dim> &)>;
+    using TractionFunction
+      = std::function<dealii::Tensor<1, dim>(const dealii::Point<dim> &,
+                                             const dealii::Tensor<1, dim> &)>;
     TractionTerm(const unsigned int            u,
                  const BoundarySelection<dim> &selection,
                  TractionFunction              t)

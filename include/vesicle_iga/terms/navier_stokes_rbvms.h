@@ -76,31 +76,32 @@ namespace vesicle_iga
       unsigned int c, l, m;
     };
     /// The flow at one point.
-    struct Point;
-    Point
-    point(const QuadratureInputs<dim>         &in,
-          const unsigned int                   q,
-          const double                         mu,
-          const dealii::Tensor<1, dim>        &grad_mu,
-          const dealii::Tensor<1, dim>        &force) const;
+    struct FlowPoint;
+    FlowPoint
+    point(const QuadratureInputs<dim>  &in,
+          const unsigned int            q,
+          const double                  mu,
+          const dealii::Tensor<1, dim> &grad_mu,
+          const dealii::Tensor<1, dim> &force) const;
     void
-    write_jacobian(const Point        &f,
-                   const unsigned int  q,
-                   TermCoefficients   &out) const;
+    write_jacobian(const FlowPoint   &f,
+                   const unsigned int q,
+                   TermCoefficients  &out) const;
 
     const unsigned int           velocity, pressure;
     const FlowCoefficients<dim> &coefficients;
     std::vector<Atom>            atoms;
 
-    std::array<InputHandle, dim>                   u, u_rate;
-    std::array<std::array<InputHandle, dim>, dim>  grad_u;
-    std::array<std::array<InputHandle, dim * dim>, dim> hessian_u; // [c][l dim + m]
-    InputHandle                                    p;
-    std::array<InputHandle, dim>                   grad_p;
-    std::array<ResidualHandle, dim>                r_value;
+    std::array<InputHandle, dim>                  u, u_rate;
+    std::array<std::array<InputHandle, dim>, dim> grad_u;
+    std::array<std::array<InputHandle, dim * dim>, dim>
+                                    hessian_u; // [c][l dim + m]
+    InputHandle                     p;
+    std::array<InputHandle, dim>    grad_p;
+    std::array<ResidualHandle, dim> r_value;
     std::array<std::array<ResidualHandle, dim>, dim> r_gradient;
-    ResidualHandle                                 r_continuity;
-    std::array<ResidualHandle, dim>                r_fine_scale;
+    ResidualHandle                                   r_continuity;
+    std::array<ResidualHandle, dim>                  r_fine_scale;
     /// Jacobian handles: [test slot][atom].
     std::vector<std::vector<JacobianHandle>> j_velocity;   // (a, 1 + dim)
     std::vector<JacobianHandle>              j_continuity; // per atom or none

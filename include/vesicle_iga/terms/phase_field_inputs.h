@@ -47,9 +47,9 @@ namespace vesicle_iga
         potential_gradient[k] = d.auxiliary(potential, 0, D::gradient(k));
     }
 
-    const unsigned int              phi;
-    const int                       potential;
-    InputHandle                     value, laplacian;
-    std::array<InputHandle, dim>    gradient, potential_gradient;
+    const unsigned int           phi;
+    const int                    potential;
+    InputHandle                  value, laplacian;
+    std::array<InputHandle, dim> gradient, potential_gradient;
   };
 } // namespace vesicle_iga

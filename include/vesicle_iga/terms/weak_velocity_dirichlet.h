@@ -54,12 +54,12 @@ namespace vesicle_iga
              TermCoefficients            &out) const override;
 
   private:
-    const unsigned int            velocity, pressure;
-    const FlowCoefficients<dim>  &coefficients;
-    const BoundarySelection<dim>  selection;
-    const dealii::Function<dim>  &boundary_velocity;
-    const double                  penalty_constant;
-    const bool                    inflow_term;
+    const unsigned int           velocity, pressure;
+    const FlowCoefficients<dim> &coefficients;
+    const BoundarySelection<dim> selection;
+    const dealii::Function<dim> &boundary_velocity;
+    const double                 penalty_constant;
+    const bool                   inflow_term;
 
     std::array<InputHandle, dim>                     u;
     std::array<std::array<InputHandle, dim>, dim>    grad_u;
@@ -74,6 +74,6 @@ namespace vesicle_iga
     std::array<std::array<JacobianHandle, dim>, dim>                  j_vv;
     std::array<std::array<std::array<JacobianHandle, dim>, dim>, dim> j_vg;
     std::array<std::array<std::array<JacobianHandle, dim>, dim>, dim> j_gv;
-    std::array<JacobianHandle, dim>                                   j_vp, j_pv;
+    std::array<JacobianHandle, dim> j_vp, j_pv;
   };
 } // namespace vesicle_iga

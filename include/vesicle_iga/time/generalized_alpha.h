@@ -63,16 +63,15 @@ namespace vesicle_iga
    * nothing is prescribed).
    */
   template <int dim>
-  class GeneralizedAlphaStepper : public NonlinearProblem,
-                                  public Checkpointable
+  class GeneralizedAlphaStepper : public NonlinearProblem, public Checkpointable
   {
   public:
     using Parameters = GeneralizedAlphaParameters;
 
     /// Strong boundary values of the fields at time t (inhomogeneous
     /// constraints with the lines of the increment constraints).
-    using BoundaryValues =
-      std::function<void(const double, dealii::AffineConstraints<double> &)>;
+    using BoundaryValues
+      = std::function<void(const double, dealii::AffineConstraints<double> &)>;
 
     /// @p timer (optional): sections "residual" and "assembly" (a
     /// Jacobian, with or without the residual).
@@ -80,7 +79,7 @@ namespace vesicle_iga
                             JacobianSolver             &jacobian_solver,
                             const Parameters           &parameters,
                             const BoundaryValues       &boundary_values = {},
-                            dealii::TimerOutput        *timer           = nullptr);
+                            dealii::TimerOutput        *timer = nullptr);
 
     /// U(t0) = @p U0 (owned layout), zero rate.
     void
@@ -186,13 +185,13 @@ namespace vesicle_iga
     void
     set_stage(const dealii::TrilinosWrappers::MPI::Vector &rate_n1);
 
-    const SystemAssembler<dim>        &assembler;
-    const SplineDofHandler<dim>       &dofs;
-    JacobianSolver                    &linear;
-    const GeneralizedAlpha             alpha;
-    const bool                         algebraic_at_end;
-    const BoundaryValues               boundary_values;
-    dealii::TimerOutput               *timer;
+    const SystemAssembler<dim>  &assembler;
+    const SplineDofHandler<dim> &dofs;
+    JacobianSolver              &linear;
+    const GeneralizedAlpha       alpha;
+    const bool                   algebraic_at_end;
+    const BoundaryValues         boundary_values;
+    dealii::TimerOutput         *timer;
     /// Owned entries of the algebraic components.
     std::vector<dealii::types::global_dof_index> algebraic_dofs;
 

@@ -27,7 +27,7 @@ namespace vesicle_iga
   public:
     struct Parameters
     {
-      std::string  mode = "adaptive";
+      std::string  mode       = "adaptive";
       double       initial_dt = 1, min_dt = 1e-14, max_dt = 1, growth = 1;
       double       atol = 1e-4, rtol = 1e-4;
       unsigned int increase_delay = 3;

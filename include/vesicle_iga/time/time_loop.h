@@ -58,7 +58,8 @@ namespace vesicle_iga
     /// Solve the step from time() to time() + dt without accepting it;
     /// throws SolverFailure.
     virtual StepReport
-    solve_step(const double dt) = 0;
+    solve_step(const double dt)
+      = 0;
     /// Weighted RMS norm of the local error estimate (N5) of the solved
     /// step; < 0: none.
     virtual double
@@ -67,7 +68,8 @@ namespace vesicle_iga
       return -1;
     }
     virtual void
-    accept_step() = 0;
+    accept_step()
+      = 0;
     /// The solved step was rejected (the state is still that of time()).
     virtual void
     reject_step()
@@ -90,7 +92,8 @@ namespace vesicle_iga
     virtual void
     measure(const StepInfo      &info,
             std::vector<double> &row,
-            std::ostream        &progress) = 0;
+            std::ostream        &progress)
+      = 0;
   };
 
 
@@ -101,7 +104,8 @@ namespace vesicle_iga
     virtual ~StationarityCriterion() = default;
     /// Checked after the monitors of every accepted step.
     virtual bool
-    stationary(const StepInfo &info) = 0;
+    stationary(const StepInfo &info)
+      = 0;
     /// Printed when it fires.
     virtual std::string
     message(const StepInfo &info) const = 0;
@@ -152,8 +156,8 @@ namespace vesicle_iga
       parse(dealii::ParameterHandler &prm, const std::string &section);
     };
 
-    TimeLoop(const Parameters   &parameters,
-             const RunContext   &context,
+    TimeLoop(const Parameters    &parameters,
+             const RunContext    &context,
              dealii::TimerOutput &timer);
 
     /// An object saved in checkpoints under @p prefix (and loaded on
@@ -216,14 +220,14 @@ namespace vesicle_iga
     void
     write_checkpoint() const;
 
-    const Parameters                                       parameters;
-    const RunContext                                      &context;
-    dealii::TimerOutput                                   &timer;
-    StepSizeController                                     controller;
+    const Parameters                                      parameters;
+    const RunContext                                     &context;
+    dealii::TimerOutput                                  &timer;
+    StepSizeController                                    controller;
     std::vector<std::pair<std::string, Checkpointable *>> objects;
-    std::vector<Monitor *>                                 monitors;
-    std::vector<StationarityCriterion *>                   criteria;
-    std::function<void(unsigned int)>                      output;
+    std::vector<Monitor *>                                monitors;
+    std::vector<StationarityCriterion *>                  criteria;
+    std::function<void(unsigned int)>                     output;
     std::string  series_name = "time-series.csv";
     bool         checkpoints = true, restarted = false, stationary = false;
     unsigned int step_number = 0, rejected = 0;
