@@ -62,6 +62,24 @@ namespace vesicle_iga
         << " corrections)";
       return s.str();
     }
+
+
+    /// x += K^{-1} (-R); counts the correction. R is overwritten.
+    void
+    correct(JacobianSolver                &linear,
+            TrilinosWrappers::MPI::Vector &residual,
+            TrilinosWrappers::MPI::Vector &x,
+            NewtonReport                  &report)
+    {
+      TrilinosWrappers::MPI::Vector increment(x);
+      residual *= -1.;
+      increment                 = 0;
+      const LinearSolveResult r = linear.solve(increment, residual);
+      report.krylov_iterations += r.iterations;
+      report.linear_residual = r.residual;
+      ++report.iterations;
+      x += increment;
+    }
   } // namespace
 
 
@@ -70,7 +88,7 @@ namespace vesicle_iga
                       TrilinosWrappers::MPI::Vector &x) const
   {
     NewtonReport                  report;
-    TrilinosWrappers::MPI::Vector residual(x), increment(x);
+    TrilinosWrappers::MPI::Vector residual(x);
     JacobianSolver               &linear = problem.jacobian_solver();
     problem.assemble(x, &residual, true);
     linear.matrix_changed(true);
@@ -94,13 +112,7 @@ namespace vesicle_iga
             linear.matrix_changed(false);
             jacobian_age = 0;
           }
-        residual *= -1.;
-        increment                 = 0;
-        const LinearSolveResult r = linear.solve(increment, residual);
-        report.krylov_iterations += r.iterations;
-        report.linear_residual = r.residual;
-        ++report.iterations;
-        x += increment;
+        correct(linear, residual, x, report);
         problem.assemble(x, &residual, false);
       }
   }
@@ -111,18 +123,12 @@ namespace vesicle_iga
                              TrilinosWrappers::MPI::Vector &x) const
   {
     NewtonReport                  report;
-    TrilinosWrappers::MPI::Vector residual(x), increment(x);
+    TrilinosWrappers::MPI::Vector residual(x);
     JacobianSolver               &linear = problem.jacobian_solver();
     problem.assemble(x, &residual, true);
     linear.matrix_changed(true);
     report.initial_residual = residual.l2_norm();
-    residual *= -1.;
-    increment                 = 0;
-    const LinearSolveResult r = linear.solve(increment, residual);
-    report.krylov_iterations  = r.iterations;
-    report.linear_residual    = r.residual;
-    report.iterations         = 1;
-    x += increment;
+    correct(linear, residual, x, report);
     return report;
   }
 } // namespace vesicle_iga

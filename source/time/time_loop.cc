@@ -8,6 +8,13 @@ namespace vesicle_iga
 {
   using namespace dealii;
 
+  namespace
+  {
+    /// Version of the checkpoint layout (names and meaning of the entries);
+    /// raised whenever a Checkpointable changes what it writes.
+    const double checkpoint_format_version = 2;
+  } // namespace
+
   void
   TimeLoop::Parameters::declare(ParameterHandler &prm, const Defaults &d)
   {
@@ -118,7 +125,8 @@ namespace vesicle_iga
   {
     TimerOutput::Scope t(timer, "output");
     Checkpoint         c;
-    c.scalars["time_loop.step"] = step_number;
+    c.scalars["time_loop.format_version"] = checkpoint_format_version;
+    c.scalars["time_loop.step"]           = step_number;
     controller.save(c, "time_loop.controller");
     for (const auto &[prefix, object] : objects)
       object->save(c, prefix);

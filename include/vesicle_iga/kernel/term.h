@@ -304,4 +304,22 @@ namespace vesicle_iga
               const double                *JxW,
               double                      *sums) const = 0;
   };
+
+
+  /**
+   * A term that is the first variation of a functional (an energy, a
+   * constraint functional): as an Integrand it integrates the functional
+   * itself, so that the functional, its variation (residual) and second
+   * variation (Jacobian) live in one class.
+   */
+  template <int dim>
+  class FunctionalTerm : public Term<dim>, public Integrand<dim>
+  {
+  public:
+    unsigned int
+    n_values() const override
+    {
+      return 1;
+    }
+  };
 } // namespace vesicle_iga

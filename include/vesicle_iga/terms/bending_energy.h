@@ -15,7 +15,7 @@ namespace vesicle_iga
    * As an Integrand: E_B.
    */
   template <int dim>
-  class BendingEnergy : public Term<dim>, public Integrand<dim>
+  class BendingEnergy : public FunctionalTerm<dim>
   {
   public:
     BendingEnergy(const unsigned int phi,
@@ -34,11 +34,6 @@ namespace vesicle_iga
     evaluate(const QuadratureInputs<dim> &in,
              TermCoefficients            &out) const override;
 
-    unsigned int
-    n_values() const override
-    {
-      return 1;
-    }
     void
     integrate(const QuadratureInputs<dim> &in,
               const double                *JxW,

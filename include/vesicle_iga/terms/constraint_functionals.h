@@ -13,7 +13,7 @@ namespace vesicle_iga
    * Newton solve (E19: explicit in A(phi_n)). As an Integrand: A.
    */
   template <int dim>
-  class AreaConstraint : public Term<dim>, public Integrand<dim>
+  class AreaConstraint : public FunctionalTerm<dim>
   {
   public:
     AreaConstraint(const unsigned int phi, const double epsilon);
@@ -37,11 +37,6 @@ namespace vesicle_iga
     void
     evaluate(const QuadratureInputs<dim> &in,
              TermCoefficients            &out) const override;
-    unsigned int
-    n_values() const override
-    {
-      return 1;
-    }
     void
     integrate(const QuadratureInputs<dim> &in,
               const double                *JxW,
@@ -63,7 +58,7 @@ namespace vesicle_iga
    * int (1 - phi)/2 (E9). As an Integrand: V.
    */
   template <int dim>
-  class VolumeConstraint : public Term<dim>, public Integrand<dim>
+  class VolumeConstraint : public FunctionalTerm<dim>
   {
   public:
     explicit VolumeConstraint(const unsigned int phi)
@@ -89,11 +84,6 @@ namespace vesicle_iga
     void
     evaluate(const QuadratureInputs<dim> &in,
              TermCoefficients            &out) const override;
-    unsigned int
-    n_values() const override
-    {
-      return 1;
-    }
     void
     integrate(const QuadratureInputs<dim> &in,
               const double                *JxW,

@@ -12,7 +12,7 @@ namespace vesicle_iga
    * As an Integrand: E_DM.
    */
   template <int dim>
-  class MembraneDielectricEnergy : public Term<dim>, public Integrand<dim>
+  class MembraneDielectricEnergy : public FunctionalTerm<dim>
   {
   public:
     MembraneDielectricEnergy(const unsigned int phi,
@@ -30,11 +30,6 @@ namespace vesicle_iga
     void
     evaluate(const QuadratureInputs<dim> &in,
              TermCoefficients            &out) const override;
-    unsigned int
-    n_values() const override
-    {
-      return 1;
-    }
     void
     integrate(const QuadratureInputs<dim> &in,
               const double                *JxW,
@@ -58,7 +53,7 @@ namespace vesicle_iga
    * As an Integrand: E_DE.
    */
   template <int dim>
-  class ElectrolyteDielectricEnergy : public Term<dim>, public Integrand<dim>
+  class ElectrolyteDielectricEnergy : public FunctionalTerm<dim>
   {
   public:
     ElectrolyteDielectricEnergy(const unsigned int phi,
@@ -75,11 +70,6 @@ namespace vesicle_iga
     void
     evaluate(const QuadratureInputs<dim> &in,
              TermCoefficients            &out) const override;
-    unsigned int
-    n_values() const override
-    {
-      return 1;
-    }
     void
     integrate(const QuadratureInputs<dim> &in,
               const double                *JxW,

@@ -15,7 +15,7 @@ namespace vesicle_iga
    * coefficients in the normalised units of spec 3.10. As an Integrand: E_F.
    */
   template <int dim>
-  class FlexoelectricEnergy : public Term<dim>, public Integrand<dim>
+  class FlexoelectricEnergy : public FunctionalTerm<dim>
   {
   public:
     /// @p potential: the auxiliary field of psi.
@@ -34,11 +34,6 @@ namespace vesicle_iga
     void
     evaluate(const QuadratureInputs<dim> &in,
              TermCoefficients            &out) const override;
-    unsigned int
-    n_values() const override
-    {
-      return 1;
-    }
     void
     integrate(const QuadratureInputs<dim> &in,
               const double                *JxW,
