@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <iomanip>
 #include <iostream>
 #include <ostream>
 #include <sstream>
@@ -96,9 +97,10 @@ read_time_series(const std::string &name)
   return read_named_time_series(name).rows;
 }
 
-/// Prints the row counts, both final rows and the largest relative
-/// difference over all rows ("below 1e-9" when the restart reproduces the
-/// uninterrupted run to round-off).
+/// Prints whether both series have the same rows and the largest relative
+/// difference over all of them ("below 1e-9" when the restart reproduces
+/// the uninterrupted run to round-off). The rows themselves are not printed:
+/// step sizes and iteration counts move with round-off from CPU to CPU.
 inline void
 report_restart_equivalence(std::ostream      &out,
                            const std::string &straight_file,
@@ -113,13 +115,7 @@ report_restart_equivalence(std::ostream      &out,
       diff = std::max(diff,
                       std::abs(straight[i][j] - restarted[i][j])
                         / (1e-3 + std::abs(straight[i][j])));
-  out << "final row, uninterrupted:";
-  for (const double x : straight.back())
-    out << ' ' << x;
-  out << "\nfinal row, restarted:   ";
-  for (const double x : restarted.back())
-    out << ' ' << x;
-  out << "\nlargest relative difference over all rows: "
+  out << "largest relative difference over all rows: "
       << (diff < 1e-9 ? "below 1e-9" : std::to_string(diff)) << '\n';
 }
 

@@ -213,15 +213,19 @@ namespace vesicle_iga
                                double(info.report.newton_iterations),
                                double(info.report.krylov_iterations)};
     std::ostringstream  progress;
-    progress << "step " << info.step << " t=" << info.time << " dt=" << info.dt
-             << " newton=" << info.report.newton_iterations;
+    // Iteration counts only with 'Print details': they move with round-off
+    // (a residual on either side of a tolerance), the rest does not.
+    progress << "step " << info.step << " t=" << info.time << " dt=" << info.dt;
     if (context.print_details)
-      progress << " krylov=" << info.report.krylov_iterations;
+      progress << " newton=" << info.report.newton_iterations
+               << " krylov=" << info.report.krylov_iterations;
     const auto counters = problem.step_columns();
     for (unsigned int k = 0; k < counters.size(); ++k)
       {
         row.push_back(info.report.counters[k]);
-        progress << " " << counters[k].second << "=" << info.report.counters[k];
+        if (context.print_details)
+          progress << " " << counters[k].second << "="
+                   << info.report.counters[k];
       }
     row.push_back(rejected);
     for (auto *m : monitors)

@@ -14,7 +14,8 @@
 // contraction, so the count per Newton iteration must level off once the
 // hierarchy is deep: the test requires the 128^2 count to be at most 1.15
 // times the 64^2 count (measured at Re = 1: 41, 61, 59; the SIMPLE
-// approximation with AMG doubles per refinement, doc/flow.md), and the
+// approximation with AMG doubles per refinement, doc/flow.md; at most 80
+// on every mesh), and the
 // solution to agree with the direct solver's to 1e-7 relative (Krylov and
 // Newton tolerances 1e-10). The 2-rank variant checks that the count does
 // not depend on the partition (Chebyshev smoothing and the AMG of the
@@ -108,11 +109,11 @@ main(int argc, char *argv[])
           const auto block = cavity_step(n, Re, "fgmres-block");
           per_newton.push_back(double(block.result.krylov_iterations)
                                / block.result.iterations);
+          // Counts are compared, not printed (they move with round-off).
           out << "Re = " << Re << ", " << n << "^2: converged "
-              << (block.converged ? "yes" : "NO") << ", Newton "
-              << block.result.iterations << ", FGMRES per Newton " << std::fixed
-              << std::setprecision(1) << per_newton.back() << std::defaultfloat
-              << std::setprecision(6);
+              << (block.converged ? "yes" : "NO")
+              << ", FGMRES per Newton iteration at most 80: "
+              << (per_newton.back() <= 80 ? "yes" : "NO");
           // The sparse direct comparison where it is cheap.
           if (n <= 64)
             {
@@ -121,7 +122,10 @@ main(int argc, char *argv[])
               difference.add(-1., direct.solution);
               const double relative
                 = difference.l2_norm() / direct.solution.l2_norm();
-              out << ", direct Newton " << direct.result.iterations
+              out << ", same Newton iterations as the direct solver: "
+                  << (direct.result.iterations == block.result.iterations ?
+                        "yes" :
+                        "NO")
                   << ", |u_block - u_direct| / |u_direct| below 1e-7: "
                   << (relative < 1e-7 ? "yes" : "NO");
             }
