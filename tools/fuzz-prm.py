@@ -24,6 +24,7 @@ import glob
 import os
 import random
 import re
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -42,8 +43,11 @@ def mutate(lines, rng):
                                         "duplicate", "misspell", "unbalance",
                                         "junk", "truncate"])
     if kind == "number" and settings:
+        # Numbers inside names (directories, files) are not values.
         candidates = [i for i in settings
-                      if NUMBER.search(lines[i].split("=", 1)[-1])]
+                      if NUMBER.search(lines[i].split("=", 1)[-1])
+                      and not re.search(r"directory|Restart from|Name",
+                                        lines[i].split("=", 1)[0])]
         if candidates:
             i = rng.choice(candidates)
             name, value = lines[i].split("=", 1)
@@ -180,6 +184,7 @@ def main():
           ", ".join(f"{k} {v}" for k, v in sorted(counts.items())))
     for line in findings:
         print(line)
+    shutil.rmtree(work, ignore_errors=True)
     sys.exit(1 if findings else 0)
 
 

@@ -6,5 +6,6 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 source tools/mpi-env.sh
 tools/build.sh
+cmake --build build --target test-programs -j2
 cd build
 ctest -j2 --output-on-failure

@@ -56,7 +56,7 @@ namespace vesicle_iga
               if (std::abs(z[i] - x) <= tol)
                 return i;
             throw InputError(parameter,
-                             std::to_string(x),
+                             value_text(x),
                              "coordinate ranges of strongly imposed "
                              "conditions that start and end at breakpoints "
                              "of the mesh (or beyond the face)");
@@ -238,7 +238,12 @@ namespace vesicle_iga
         if (space.knot_vector(f / 2).is_periodic())
           continue;
         for (const auto &piece : selection.pieces_on_face(f))
-          for (unsigned int c = 0; c < dof_handler.n_components(); ++c)
+          // Components beyond the mask (fields a model coupled to this
+          // one, e.g. the vesicles of the flow) are not constrained.
+          for (unsigned int c = 0;
+               c < std::min<std::size_t>(dof_handler.n_components(),
+                                         components.size());
+               ++c)
             {
               if (!components[c])
                 continue;

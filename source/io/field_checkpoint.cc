@@ -2,9 +2,63 @@
 #include <vesicle_iga/io/field_checkpoint.h>
 #include <vesicle_iga/parallel/natural_numbering.h>
 
+#include <cmath>
+
 namespace vesicle_iga
 {
   using namespace dealii;
+
+  namespace
+  {
+    /// What defines the discrete space of a vector: a restart needs the
+    /// same (spec section 7: a checkpoint restarts the same discretisation,
+    /// on any number of ranks).
+    struct RecordEntry
+    {
+      std::string key;
+      double      value;
+      std::string description;
+    };
+
+    template <int dim>
+    std::vector<RecordEntry>
+    discretization_record(const SplineDofHandler<dim> &dofs)
+    {
+      const FieldLayout<dim>  &layout = dofs.get_layout();
+      std::vector<RecordEntry> r;
+      r.push_back({"dimension", double(dim), "dimension"});
+      r.push_back({"fields", double(layout.n_fields()), "number of fields"});
+      for (unsigned int f = 0; f < layout.n_fields(); ++f)
+        r.push_back({"field" + std::to_string(f) + ".components",
+                     double(layout.field(f).n_components),
+                     "components of field '" + layout.field(f).name + "'"});
+      r.push_back({"spaces", double(layout.n_spaces()), "number of spaces"});
+      for (unsigned int s = 0; s < layout.n_spaces(); ++s)
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            const KnotVector &k = layout.space(s).knot_vector(d);
+            const std::string key
+              = "space" + std::to_string(s) + ".direction" + std::to_string(d);
+            const std::string where = " in direction " + std::to_string(d)
+                                      + " of spline space " + std::to_string(s);
+            const auto &z = k.breakpoints();
+            r.push_back(
+              {key + ".degree", double(k.degree()), "degree" + where});
+            r.push_back({key + ".elements",
+                         double(k.n_elements()),
+                         "number of elements" + where});
+            r.push_back({key + ".basis",
+                         double(k.n_basis()),
+                         "number of basis functions (continuity, "
+                         "periodicity)"
+                           + where});
+            r.push_back({key + ".lower", z.front(), "lower end" + where});
+            r.push_back({key + ".upper", z.back(), "upper end" + where});
+          }
+      return r;
+    }
+  } // namespace
+
 
   template <int dim>
   void
@@ -14,6 +68,8 @@ namespace vesicle_iga
              const dealii::TrilinosWrappers::MPI::Vector &v)
   {
     checkpoint.vectors[name] = gather_natural(dofs, v);
+    for (const auto &entry : discretization_record(dofs))
+      checkpoint.scalars[name + ".discretization." + entry.key] = entry.value;
   }
 
 
@@ -25,6 +81,22 @@ namespace vesicle_iga
              dealii::TrilinosWrappers::MPI::Vector &v)
   {
     const auto &natural = checkpoint.vector(name);
+    // Checkpoints of format 2 have no record; their size is checked below.
+    for (const auto &entry : discretization_record(dofs))
+      {
+        const auto it
+          = checkpoint.scalars.find(name + ".discretization." + entry.key);
+        if (it == checkpoint.scalars.end())
+          continue;
+        const double tolerance = 1e-12 * std::max(1., std::abs(entry.value));
+        check_input(std::abs(it->second - entry.value) <= tolerance,
+                    "Restart from",
+                    checkpoint.source,
+                    "a checkpoint of the same discretisation: '" + name
+                      + "' was written with " + entry.description + " = "
+                      + value_text(it->second) + ", this run has "
+                      + value_text(entry.value));
+      }
     check_input(natural.size() == dofs.n_dofs(),
                 "Restart from",
                 checkpoint.source,

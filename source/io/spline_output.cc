@@ -7,10 +7,12 @@
 #include <deal.II/fe/mapping_q.h>
 #include <deal.II/numerics/data_out.h>
 
+#include <vesicle_iga/base/fault_injection.h>
 #include <vesicle_iga/io/spline_output.h>
 #include <vesicle_iga/postprocess/field_integrals.h>
 
 #include <algorithm>
+#include <filesystem>
 
 namespace vesicle_iga
 {
@@ -18,6 +20,18 @@ namespace vesicle_iga
 
   namespace
   {
+    /// Test fault "vtu-write": a kill in the middle of the file (its
+    /// second half lost).
+    [[noreturn]] void
+    kill_while_writing(const std::string &filename)
+    {
+      std::error_code error;
+      const auto      size = std::filesystem::file_size(filename, error);
+      if (!error)
+        std::filesystem::resize_file(filename, size / 2, error);
+      kill_process();
+    }
+
     template <int dim>
     unsigned int
     max_degree(const SplineSpace<dim> &space)
@@ -184,8 +198,35 @@ namespace vesicle_iga
     flags.write_higher_order_cells = true;
     data_out.set_flags(flags);
     data_out.build_patches(mapping, p, DataOut<dim>::curved_inner_cells);
-    return data_out.write_vtu_with_pvtu_record(
-      directory + "/", basename, 0, tria.get_communicator(), 0, 0);
+    // Every rank writes its piece; all agree on the outcome, so that a
+    // rank that cannot write ends the run with a message instead of
+    // leaving the others in the next collective.
+    std::string record, error;
+    try
+      {
+        record = data_out.write_vtu_with_pvtu_record(
+          directory + "/", basename, 0, tria.get_communicator(), 0, 0);
+      }
+    catch (...)
+      {
+        error = "rank "
+                + std::to_string(
+                  Utilities::MPI::this_mpi_process(tria.get_communicator()));
+      }
+    if (fault_requested("vtu-write"))
+      kill_while_writing(directory + "/" + record);
+    const auto  failed = Utilities::MPI::gather(tria.get_communicator(), error);
+    std::string ranks;
+    for (const auto &f : failed)
+      if (!f.empty())
+        ranks += (ranks.empty() ? "" : ", ") + f;
+    ranks = Utilities::MPI::broadcast(tria.get_communicator(), ranks, 0);
+    AssertThrow(ranks.empty(),
+                ExcMessage("cannot write the VTU output " + directory + "/"
+                           + basename + "* (" + ranks
+                           + " failed: no permission, disk full, quota or "
+                             "file size limit?)"));
+    return record;
   }
 
   template class SplineFieldWriter<2>;

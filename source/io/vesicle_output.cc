@@ -1,5 +1,6 @@
 #include <deal.II/base/mpi.h>
 
+#include <vesicle_iga/io/checked_output.h>
 #include <vesicle_iga/io/spline_output.h>
 #include <vesicle_iga/io/vesicle_output.h>
 
@@ -113,6 +114,7 @@ namespace vesicle_iga
             out << '\n';
           }
       }
+    check_written(out, filename);
   }
 
 
@@ -143,6 +145,7 @@ namespace vesicle_iga
           out << x[first_axis] << ',' << x[second_axis] << ',' << value[0]
               << '\n';
         }
+    check_written(out, filename);
   }
 
   template void

@@ -2,6 +2,7 @@
 
 #include <deal.II/lac/trilinos_sparsity_pattern.h>
 
+#include <vesicle_iga/base/input_error.h>
 #include <vesicle_iga/fields/dirichlet_constraints.h>
 #include <vesicle_iga/models/incompressible_flow.h>
 #include <vesicle_iga/parallel/natural_numbering.h>
@@ -15,15 +16,19 @@ namespace vesicle_iga
   namespace
   {
     /// The layout of the flow: velocity (differential) and pressure
-    /// (algebraic) on one space, interleaved per basis function.
+    /// (algebraic) on one space, interleaved per basis function, then the
+    /// fields of the coupling.
     template <int dim>
     FieldLayout<dim>
-    flow_layout(const SplineSpace<dim> &space)
+    flow_layout(const SplineSpace<dim>  &space,
+                const FlowCoupling<dim> *coupling)
     {
       FieldLayout<dim> layout;
       layout.add_space(space);
       layout.add_field("velocity", dim, 0, FieldKind::differential, 0);
       layout.add_field("pressure", 1, 0, FieldKind::algebraic, 1);
+      if (coupling)
+        coupling->add_fields(layout);
       return layout;
     }
 
@@ -110,11 +115,12 @@ namespace vesicle_iga
     const FlowCoefficients<dim>               &coefficients,
     const std::vector<VelocityCondition<dim>> &conditions,
     const IncompressibleFlowParameters        &parameters,
-    TimerOutput                               &timer)
+    TimerOutput                               &timer,
+    FlowCoupling<dim>                         *coupling)
     : comm(comm)
     , space(space_)
     , patch_mesh(comm, space, nullptr)
-    , dof_handler(patch_mesh, flow_layout(space))
+    , dof_handler(patch_mesh, flow_layout(space, coupling))
     , coefficients(coefficients)
     , conditions(conditions)
     , parameters(parameters)
@@ -123,6 +129,7 @@ namespace vesicle_iga
     , lumped_schur(0, dim, coefficients)
     , assembler(dof_handler, QGauss<1>(parameters.quadrature_points))
     , newton(parameters.newton)
+    , coupling(coupling)
   {
     TimerOutput::Scope scope(timer, "setup");
     // (H21): C_B = 5 (p + 1) unless given.
@@ -143,6 +150,9 @@ namespace vesicle_iga
             parameters.weak_inflow_term));
           assembler.add_term(*weak_terms.back());
         }
+    if (coupling)
+      for (Term<dim> *term : coupling->terms())
+        assembler.add_term(*term);
     // The pressure control value of basis function 0 (a corner) fixes the
     // level when no boundary does; output and errors use the zero-mean
     // pressure.
@@ -162,7 +172,15 @@ namespace vesicle_iga
                                               sparsity,
                                               &timer);
     if (parameters.solver.method == "fgmres-block")
-      setup_block_preconditioner();
+      {
+        // The block preconditioner knows velocity and pressure only.
+        check_input(!coupling,
+                    "Linear solver/Method",
+                    parameters.solver.method,
+                    "direct, gmres-ilu or gmres-amg when fields beyond "
+                    "velocity and pressure are coupled to the flow");
+        setup_block_preconditioner();
+      }
     stepper = std::make_unique<GeneralizedAlphaStepper<dim>>(
       assembler,
       *linear,
@@ -199,6 +217,8 @@ namespace vesicle_iga
                                                 velocity_components,
                                                 c);
         }
+    if (coupling)
+      coupling->boundary_values(dof_handler, t, c);
     if (parameters.fix_pressure_mean
         && dof_handler.locally_relevant_dofs().is_element(pinned_pressure)
         && !c.is_constrained(pinned_pressure))
@@ -267,16 +287,19 @@ namespace vesicle_iga
 
   template <int dim>
   void
-  IncompressibleFlow<dim>::set_initial_state(const Function<dim> &velocity,
+  IncompressibleFlow<dim>::set_initial_state(const Function<dim> &initial,
                                              const double         t0)
   {
-    std::vector<double> values(space.n_basis() * (dim + 1), 0.);
+    const unsigned int n = dof_handler.n_components();
+    AssertThrow(initial.n_components == n,
+                ExcDimensionMismatch(initial.n_components, n));
+    std::vector<double> values(space.n_basis() * n, 0.);
     for (unsigned int i = 0; i < space.n_basis(); ++i)
-      for (unsigned int c = 0; c < dim; ++c)
-        values[i * (dim + 1) + c] = velocity.value(space.greville_point(i), c);
+      for (unsigned int c = 0; c < n; ++c)
+        values[i * n + c] = initial.value(space.greville_point(i), c);
     TrilinosWrappers::MPI::Vector U(dof_handler.locally_owned_dofs(), comm);
     scatter_natural(dof_handler,
-                    interpolate_at_greville_points(space, values, dim + 1),
+                    interpolate_at_greville_points(space, values, n),
                     U);
     AffineConstraints<double> c(dof_handler.locally_relevant_dofs());
     boundary_values(t0, c);
@@ -347,8 +370,9 @@ namespace vesicle_iga
     state.value                        = &ghosted_solution;
     const auto                    sums = assembler.integrate({&mean}, state);
     TrilinosWrappers::MPI::Vector shifted(stepper->solution());
+    const unsigned int            n = dof_handler.n_components();
     for (const auto i : dof_handler.locally_owned_dofs())
-      if (i % (dim + 1) == dim)
+      if (i % n == dim)
         shifted[i] -= sums[0] / sums[1];
     shifted.compress(VectorOperation::insert);
     ghosted_solution = shifted;

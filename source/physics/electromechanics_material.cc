@@ -110,12 +110,12 @@ namespace vesicle_iga
       {
         check_input(sigma_in > 0 && sigma_out > 0 && sigma_m > 0,
                     "Electric field/Membrane conductivity",
-                    std::to_string(sigma_m),
+                    value_text(sigma_m),
                     "positive conductivities (sigma(phi) of (E10) must stay "
                     "positive for the potential problem (E17))");
         check_input(length_unit > 0 && energy_unit > 0 && potential_unit > 0,
                     "Electric field/Energy unit",
-                    std::to_string(energy_unit),
+                    value_text(energy_unit),
                     "positive units");
       }
   }

@@ -91,14 +91,14 @@ namespace vesicle_iga
         const double phi_boundary = std::tanh(gap / (std::sqrt(2.) * epsilon));
         check_input(phi_boundary >= 0.9,
                     "Semi-axes",
-                    std::to_string(semi_axes[d]) + " (direction "
+                    value_text(semi_axes[d]) + " (direction "
                       + std::string(1, "xyz"[d]) + ")",
                     "a shape that fits in the domain with a gap of at "
                     "least 2.08 epsilon = "
-                      + std::to_string(2.08 * epsilon)
+                      + value_text(2.08 * epsilon)
                       + " to every face, so that phi_0 >= 0.9 on the "
                         "boundary where (E15) sets phi = 1 (here phi_0 = "
-                      + std::to_string(phi_boundary) + ")");
+                      + value_text(phi_boundary) + ")");
         if (phi_boundary < 0.999)
           out << "warning: the initial phase field is only " << phi_boundary
               << " on the faces normal to "

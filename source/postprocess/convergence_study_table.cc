@@ -1,3 +1,4 @@
+#include <vesicle_iga/io/checked_output.h>
 #include <vesicle_iga/postprocess/convergence_study_table.h>
 
 #include <cmath>
@@ -76,6 +77,7 @@ namespace vesicle_iga
           f << ',' << e;
         f << '\n';
       }
+    check_written(f, filename);
   }
 
 

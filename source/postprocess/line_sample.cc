@@ -2,6 +2,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <vesicle_iga/base/input_error.h>
+#include <vesicle_iga/io/checked_output.h>
 #include <vesicle_iga/postprocess/line_sample.h>
 
 #include <algorithm>
@@ -65,15 +66,8 @@ namespace vesicle_iga
     for (const auto &[entry, point] :
          {std::make_pair("Start", &start), std::make_pair("End", &end)})
       {
-        const std::string   text = prm.get(entry);
-        std::vector<double> v;
-        try
-          {
-            v = Utilities::string_to_double(
-              Utilities::split_string_list(text, ','));
-          }
-        catch (...)
-          {}
+        const std::string         text = prm.get(entry);
+        const std::vector<double> v = parse_double_list(text, prefix + entry);
         check_input(v.size() == dim,
                     prefix + entry,
                     text,
@@ -293,7 +287,8 @@ namespace vesicle_iga
     };
     if (root)
       {
-        std::ofstream f(directory + "/" + sample.name + ".csv");
+        const std::string name = directory + "/" + sample.name + ".csv";
+        std::ofstream     f(name);
         f << sample.coordinate_name << ',' << sample.field_name << '\n'
           << std::setprecision(10);
         for (unsigned int i = 0; i < sample.points; ++i)
@@ -301,6 +296,7 @@ namespace vesicle_iga
             const Point<dim> x = point_on_line(double(i) / (sample.points - 1));
             f << x[sample.coordinate] << ',' << value_at(x) << '\n';
           }
+        check_written(f, name);
       }
     double integral = 0, length = 0;
     for (unsigned int d = 0; d < dim; ++d)
@@ -336,10 +332,13 @@ namespace vesicle_iga
     // tools/plot-line-samples.py).
     if (root)
       {
-        std::ofstream f(directory + "/" + sample.name + "-reference.csv");
+        const std::string name
+          = directory + "/" + sample.name + "-reference.csv";
+        std::ofstream f(name);
         f << sample.coordinate_name << ',' << sample.field_name << '\n';
         for (const auto &[c, v] : reference_line_data(sample.reference))
           f << c << ',' << v << '\n';
+        check_written(f, name);
       }
     for (const auto &[c, v] : reference_line_data(sample.reference))
       deviation

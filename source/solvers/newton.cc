@@ -1,7 +1,9 @@
+#include <vesicle_iga/base/fault_injection.h>
 #include <vesicle_iga/base/solver_failure.h>
 #include <vesicle_iga/solvers/newton.h>
 
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 namespace vesicle_iga
@@ -78,6 +80,9 @@ namespace vesicle_iga
       report.krylov_iterations += r.iterations;
       report.linear_residual = r.residual;
       ++report.iterations;
+      if (!std::isfinite(increment.l2_norm()))
+        throw SolverFailure(
+          describe("the Newton update is not finite", report));
       x += increment;
     }
   } // namespace
@@ -95,6 +100,17 @@ namespace vesicle_iga
     unsigned int jacobian_age = 0;
     for (unsigned int it = 0;; ++it)
       {
+        if (fault_requested("nan-residual"))
+          {
+            // Test fault: a NaN in the last rank's part only.
+            const MPI_Comm comm = residual.get_mpi_communicator();
+            if (Utilities::MPI::this_mpi_process(comm) + 1
+                  == Utilities::MPI::n_mpi_processes(comm)
+                && residual.locally_owned_size() > 0)
+              residual[*residual.locally_owned_elements().begin()]
+                = std::numeric_limits<double>::quiet_NaN();
+            residual.compress(VectorOperation::insert);
+          }
         report.residual = residual.l2_norm();
         if (it == 0)
           report.initial_residual = report.residual;

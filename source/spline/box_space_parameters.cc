@@ -102,13 +102,21 @@ namespace vesicle_iga
     for (const double x :
          parse_double_list(prm.get("Elements"), "Mesh/Elements"))
       {
-        check_input(x >= 1 && x == std::floor(x),
+        check_input(x >= 1 && x == std::floor(x) && x <= 1e6,
                     "Mesh/Elements",
                     prm.get("Elements"),
-                    "positive integers");
+                    "positive integers up to 10^6 per direction");
         n.push_back(static_cast<unsigned int>(x));
       }
-    elements = per_direction(n, dim, "Mesh/Elements", prm.get("Elements"));
+    elements     = per_direction(n, dim, "Mesh/Elements", prm.get("Elements"));
+    double total = 1;
+    for (const unsigned int e : elements)
+      total *= e;
+    check_input(total <= 1e9,
+                "Mesh/Elements",
+                prm.get("Elements"),
+                "at most 10^9 elements in all (the element and basis "
+                "numbering is 32-bit)");
     grading
       = per_direction(parse_double_list(prm.get("Grading"), "Mesh/Grading"),
                       dim,

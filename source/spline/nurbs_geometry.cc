@@ -22,7 +22,7 @@ namespace vesicle_iga
                 "one control point and one weight per basis function ("
                   + std::to_string(space.n_basis()) + ")");
     for (const double wi : w)
-      check_input(wi > 0, "NURBS weight", std::to_string(wi), "w > 0");
+      check_input(wi > 0, "NURBS weight", value_text(wi), "w > 0");
     homogeneous.resize(spline_space.n_basis() * (dim + 1));
     for (unsigned int i = 0; i < spline_space.n_basis(); ++i)
       {

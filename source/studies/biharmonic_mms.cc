@@ -84,11 +84,8 @@ namespace vesicle_iga
       const BoundarySelection<dim> all("all", "Boundary condition");
       const bool                   clamped = (boundary_condition == "clamped");
 
-      TimerOutput           timer(context.communicator,
-                        context.pcout,
-                        context.print_details ? TimerOutput::summary :
-                                                          TimerOutput::never,
-                        TimerOutput::wall_times);
+      const auto            timer_owner = context.make_timer();
+      TimerOutput          &timer       = *timer_owner;
       ConvergenceStudyTable table(dim, {"L2", "H1", "H2"});
       for (const unsigned int p : convergence.degrees)
         for (unsigned int r = 0; r <= convergence.refinements; ++r)

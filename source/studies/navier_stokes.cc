@@ -20,6 +20,7 @@
 #include <vesicle_iga/postprocess/line_sample.h>
 #include <vesicle_iga/spline/box_space_parameters.h>
 #include <vesicle_iga/studies/convergence_parameters.h>
+#include <vesicle_iga/studies/flow_study_parts.h>
 #include <vesicle_iga/studies/study.h>
 
 #include <cmath>
@@ -34,82 +35,6 @@ namespace vesicle_iga
     const char        *section        = "Navier-Stokes";
     const unsigned int n_boundaries   = 8;
     const unsigned int n_line_samples = 2;
-
-    /// A vector-valued formula of the .prm ("expr_1; expr_2[; expr_3]" in
-    /// x, y, z and t, constants pi and Re) with @p extra trailing zero
-    /// components; errors name the parameter.
-    template <int dim>
-    std::shared_ptr<FunctionParser<dim>>
-    parse_function(const std::string &text,
-                   const unsigned int n_components,
-                   const unsigned int extra,
-                   const double       reynolds_number,
-                   const std::string &parameter)
-    {
-      auto parts = Utilities::split_string_list(text, ';');
-      check_input(parts.size() == n_components,
-                  parameter,
-                  text,
-                  std::to_string(n_components)
-                    + " expression(s) separated by ';'");
-      for (unsigned int i = 0; i < extra; ++i)
-        parts.push_back("0");
-      // Derivatives (H1 errors) by fourth-order differences with h = 1e-4:
-      // truncation and round-off both near 1e-12 for the studies' data.
-      auto f
-        = std::make_shared<FunctionParser<dim>>(n_components + extra, 0., 1e-4);
-      f->set_formula(AutoDerivativeFunction<dim>::FourthOrder);
-      const std::string variables = dim == 2 ? "x,y,t" : "x,y,z,t";
-      try
-        {
-          f->initialize(variables,
-                        parts,
-                        {{"pi", M_PI}, {"Re", reynolds_number}},
-                        true);
-          // Evaluate once so that unknown symbols are reported here.
-          Vector<double> values(n_components + extra);
-          f->vector_value(Point<dim>(), values);
-        }
-      catch (...)
-        {
-          check_input(false,
-                      parameter,
-                      text,
-                      "expressions in " + variables
-                        + " (muparser syntax; constants pi, Re)");
-        }
-      return f;
-    }
-
-
-    /// Velocity, pressure and vorticity (2D: the scalar; 3D: its
-    /// magnitude) in the VTU output.
-    template <int dim>
-    void
-    add_flow_fields(SplineFieldWriter<dim> &writer)
-    {
-      std::vector<std::string> names;
-      for (unsigned int a = 0; a < dim; ++a)
-        names.push_back(std::string("u_") + "xyz"[a]);
-      names.push_back("p");
-      writer.add_components(names);
-      writer.add_quantity(
-        "vorticity",
-        [](const SplineCellValues<dim>            &v,
-           const unsigned int                      q,
-           const std::vector<std::vector<double>> &c) {
-          const Tensor<1, dim> gu = v.gradient(c[0], q),
-                               gv = v.gradient(c[1], q);
-          if (dim == 2)
-            return gv[0] - gu[1];
-          const Tensor<1, dim> gw = v.gradient(c[2], q);
-          return std::sqrt(std::pow(gw[1] - gv[2], 2)
-                           + std::pow(gu[2] - gw[0], 2)
-                           + std::pow(gv[0] - gu[1], 2));
-        },
-        1);
-    }
-
 
     /// A viscosity or body force written as numbers needs no formula.
     bool
@@ -226,18 +151,13 @@ namespace vesicle_iga
       IncompressibleFlowParameters flow_parameters;
       TimeLoop::Parameters         loop_parameters;
 
-      double      reynolds_number;
-      std::string viscosity_text, force_text, initial_text;
-      std::string exact_velocity_text, exact_pressure_text;
-      struct BoundaryEntry
-      {
-        std::string type, where, velocity;
-      };
-      std::vector<BoundaryEntry> boundaries;
-      std::vector<LineSample>    line_samples;
-      std::string                pressure_level;
-      double                     steady_tolerance;
-      unsigned int               quadrature_points;
+      double                  reynolds_number;
+      std::string             viscosity_text, force_text, initial_text;
+      std::string             exact_velocity_text, exact_pressure_text;
+      FlowBoundaryParameters  boundaries;
+      std::vector<LineSample> line_samples;
+      double                  steady_tolerance;
+      unsigned int            quadrature_points;
     };
 
 
@@ -261,15 +181,8 @@ namespace vesicle_iga
       flow_parameters.weak_penalty_constant
         = prm.get_double("Weak penalty constant");
       flow_parameters.weak_inflow_term = prm.get_bool("Weak inflow term");
-      pressure_level                   = prm.get("Pressure level");
       quadrature_points                = prm.get_integer("Quadrature points");
-      for (unsigned int b = 1; b <= n_boundaries; ++b)
-        {
-          prm.enter_subsection("Boundary " + std::to_string(b));
-          boundaries.push_back(
-            {prm.get("Type"), prm.get("Where"), prm.get("Velocity")});
-          prm.leave_subsection();
-        }
+      boundaries.parse(prm, n_boundaries);
       std::vector<std::string> field_names{"u", "v"};
       if (dim == 3)
         field_names.push_back("w");
@@ -294,7 +207,7 @@ namespace vesicle_iga
       // Report bad input before any work.
       check_input(reynolds_number > 0,
                   prefix + "Reynolds number",
-                  std::to_string(reynolds_number),
+                  value_text(reynolds_number),
                   "> 0");
       check_input(loop_parameters.restart_file.empty()
                     || (convergence.degrees.size() == 1
@@ -308,20 +221,20 @@ namespace vesicle_iga
       bool level_fixed;
       conditions(level_fixed);
       coefficients(2);
-      parse_function<dim>(
+      parse_formula<dim>(
         initial_text, dim, 1, reynolds_number, prefix + "Initial velocity");
       if (!exact_velocity_text.empty())
-        parse_function<dim>(exact_velocity_text,
-                            dim,
-                            0,
-                            reynolds_number,
-                            prefix + "Exact velocity");
+        parse_formula<dim>(exact_velocity_text,
+                           dim,
+                           0,
+                           reynolds_number,
+                           prefix + "Exact velocity");
       if (!exact_pressure_text.empty())
-        parse_function<dim>(exact_pressure_text,
-                            1,
-                            0,
-                            reynolds_number,
-                            prefix + "Exact pressure");
+        parse_formula<dim>(exact_pressure_text,
+                           1,
+                           0,
+                           reynolds_number,
+                           prefix + "Exact pressure");
     }
 
 
@@ -339,7 +252,7 @@ namespace vesicle_iga
         c.viscosity = std::make_shared<ConstantViscosity<dim>>(values[0]);
       else
         c.viscosity
-          = std::make_shared<FormulaViscosity<dim>>(parse_function<dim>(
+          = std::make_shared<FormulaViscosity<dim>>(parse_formula<dim>(
             viscosity_text, 1, 0, reynolds_number, prefix + "Viscosity"));
       if (is_constant(force_text, values) && values.size() == dim)
         {
@@ -350,7 +263,7 @@ namespace vesicle_iga
               std::make_shared<Functions::ConstantFunction<dim>>(values));
         }
       else
-        c.body_force = BodyForce<dim>(parse_function<dim>(
+        c.body_force = BodyForce<dim>(parse_formula<dim>(
           force_text, dim, 0, reynolds_number, prefix + "Body force"));
       return c;
     }
@@ -360,31 +273,10 @@ namespace vesicle_iga
     std::vector<VelocityCondition<dim>>
     NavierStokesStudy<dim>::conditions(bool &level_fixed) const
     {
-      const std::string                   prefix = std::string(section) + "/";
-      std::vector<VelocityCondition<dim>> result;
-      std::array<bool, 2 * dim>           face_touched{};
-      level_fixed = false;
-      for (unsigned int b = 0; b < n_boundaries; ++b)
-        {
-          const auto       &e    = boundaries[b];
-          const std::string name = prefix + "Boundary " + std::to_string(b + 1);
-          const BoundarySelection<dim> where(e.where, name + "/Where");
-          for (unsigned int f = 0; f < 2 * dim; ++f)
-            face_touched[f] = face_touched[f] || where.touches_face(f);
-          if (e.type == "outflow")
-            level_fixed = true;
-          else if (e.type == "strong" || e.type == "weak")
-            result.push_back(
-              {where,
-               parse_function<dim>(
-                 e.velocity, dim, 1, reynolds_number, name + "/Velocity"),
-               e.type == "weak"});
-        }
-      // A face of an open direction that no condition names is stress-free.
-      for (unsigned int f = 0; f < 2 * dim; ++f)
-        if (!box.periodic[f / 2] && !face_touched[f])
-          level_fixed = true;
-      return result;
+      return boundaries.conditions<dim>(std::string(section) + "/",
+                                        reynolds_number,
+                                        box.periodic,
+                                        level_fixed);
     }
 
 
@@ -400,9 +292,7 @@ namespace vesicle_iga
       bool                         level_fixed;
       const auto                   conditions = this->conditions(level_fixed);
       IncompressibleFlowParameters parameters = flow_parameters;
-      parameters.fix_pressure_mean
-        = pressure_level == "mean zero"
-          || (pressure_level == "auto" && !level_fixed);
+      parameters.fix_pressure_mean = boundaries.fix_pressure_mean(level_fixed);
       parameters.quadrature_points
         = quadrature_points > 0 ? quadrature_points : p + 2;
       IncompressibleFlow<dim> flow(context.communicator,
@@ -411,12 +301,12 @@ namespace vesicle_iga
                                    conditions,
                                    parameters,
                                    timer);
-      flow.set_initial_state(*parse_function<dim>(initial_text,
-                                                  dim,
-                                                  1,
-                                                  reynolds_number,
-                                                  std::string(section)
-                                                    + "/Initial velocity"),
+      flow.set_initial_state(*parse_formula<dim>(initial_text,
+                                                 dim,
+                                                 1,
+                                                 reynolds_number,
+                                                 std::string(section)
+                                                   + "/Initial velocity"),
                              0.);
 
       const std::string tag
@@ -432,7 +322,7 @@ namespace vesicle_iga
       loop.set_time_series_name(single_run ? "time-series.csv" :
                                              "time-series-" + tag + ".csv");
       SplineFieldWriter<dim> writer(flow.dofs(), nullptr);
-      add_flow_fields(writer);
+      add_flow_output_fields(writer);
       if (convergence.write_vtu)
         loop.set_output([&](const unsigned int step) {
           writer.write(flow.solution(),
@@ -501,20 +391,20 @@ namespace vesicle_iga
       if (exact_velocity_text.empty())
         return {};
       const std::string prefix  = std::string(section) + "/";
-      auto              exact_u = parse_function<dim>(exact_velocity_text,
-                                         dim,
-                                         0,
-                                         reynolds_number,
-                                         prefix + "Exact velocity");
+      auto              exact_u = parse_formula<dim>(exact_velocity_text,
+                                        dim,
+                                        0,
+                                        reynolds_number,
+                                        prefix + "Exact velocity");
       exact_u->set_time(flow.time());
       std::shared_ptr<FunctionParser<dim>> exact_p;
       if (!exact_pressure_text.empty())
         {
-          exact_p = parse_function<dim>(exact_pressure_text,
-                                        1,
-                                        0,
-                                        reynolds_number,
-                                        prefix + "Exact pressure");
+          exact_p = parse_formula<dim>(exact_pressure_text,
+                                       1,
+                                       0,
+                                       reynolds_number,
+                                       prefix + "Exact pressure");
           exact_p->set_time(flow.time());
         }
       // The pressure is compared up to a constant: both sides with zero mean.
@@ -569,11 +459,8 @@ namespace vesicle_iga
     void
     NavierStokesStudy<dim>::run()
     {
-      TimerOutput           timer(context.communicator,
-                        context.pcout,
-                        context.print_details ? TimerOutput::summary :
-                                                          TimerOutput::never,
-                        TimerOutput::wall_times);
+      const auto            timer_owner = context.make_timer();
+      TimerOutput          &timer       = *timer_owner;
       ConvergenceStudyTable table(dim, {"u_L2", "u_H1", "p_L2"});
       for (const unsigned int p : convergence.degrees)
         for (unsigned int r = 0; r <= convergence.refinements; ++r)
@@ -654,42 +541,12 @@ namespace vesicle_iga
                           Patterns::Bool(),
                           "Include -(w, (u.m)_- (u - u_b)) on the inflow "
                           "part of weakly imposed boundaries (H20).");
-        prm.declare_entry(
-          "Pressure level",
-          "auto",
-          Patterns::Selection("auto|mean zero|free"),
-          "How the pressure constant is fixed: 'mean zero' pins one control "
-          "value and reports the zero-mean pressure; 'free' leaves it to "
-          "a stress-free boundary; 'auto': mean zero unless some boundary is "
-          "stress-free (type outflow, or a face no condition names).");
         prm.declare_entry("Quadrature points",
                           "0",
                           Patterns::Integer(0),
                           "Gauss points per direction; 0: p + 2 (spec 4.9 "
                           "uses 6).");
-        for (unsigned int b = 1; b <= n_boundaries; ++b)
-          {
-            prm.enter_subsection("Boundary " + std::to_string(b));
-            prm.declare_entry(
-              "Type",
-              "none",
-              Patterns::Selection("none|strong|weak|outflow"),
-              "strong: u = Velocity through the boundary control values "
-              "(spec 4.10, also on parts of a side); weak: Bazilevs-Hughes "
-              "(H20)-(H21); outflow: stress-free (natural). Faces that no "
-              "boundary names are stress-free.");
-            prm.declare_entry(
-              "Where",
-              "",
-              Patterns::Anything(),
-              "Boundary pieces: e.g. 'x-min', 'y-max{x:0.5:1}', 'all'.");
-            prm.declare_entry("Velocity",
-                              "0; 0",
-                              Patterns::Anything(),
-                              "u_b, dim formulas separated by ';' in x, y[, "
-                              "z], t (e.g. '8*y-2*y^2; 0').");
-            prm.leave_subsection();
-          }
+        FlowBoundaryParameters::declare(prm, n_boundaries);
         for (unsigned int l = 1; l <= n_line_samples; ++l)
           {
             prm.enter_subsection("Line sample " + std::to_string(l));

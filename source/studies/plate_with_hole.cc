@@ -174,7 +174,7 @@ namespace vesicle_iga
       prm.leave_subsection();
       check_input(nu > -1 && nu < 0.5,
                   "Poisson ratio",
-                  std::to_string(nu),
+                  value_text(nu),
                   "-1 < nu < 0.5");
     }
 
@@ -197,11 +197,8 @@ namespace vesicle_iga
                                });
       const Functions::ZeroFunction<2> zero(2);
 
-      TimerOutput           timer(context.communicator,
-                        context.pcout,
-                        context.print_details ? TimerOutput::summary :
-                                                          TimerOutput::never,
-                        TimerOutput::wall_times);
+      const auto            timer_owner = context.make_timer();
+      TimerOutput          &timer       = *timer_owner;
       ConvergenceStudyTable table(
         2,
         {"L2", "energy", "stress_L2", "energy_relative", "stress_L2_relative"});

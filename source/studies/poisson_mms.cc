@@ -91,11 +91,8 @@ namespace vesicle_iga
                                           "Strong Dirichlet boundaries");
       const BoundarySelection<dim> nitsche(nitsche_text, "Nitsche boundaries");
 
-      TimerOutput           timer(context.communicator,
-                        context.pcout,
-                        context.print_details ? TimerOutput::summary :
-                                                          TimerOutput::never,
-                        TimerOutput::wall_times);
+      const auto            timer_owner = context.make_timer();
+      TimerOutput          &timer       = *timer_owner;
       ConvergenceStudyTable table(dim, {"L2", "H1"});
       for (const unsigned int p : convergence.degrees)
         for (unsigned int r = 0; r <= convergence.refinements; ++r)

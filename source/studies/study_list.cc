@@ -16,6 +16,8 @@ namespace vesicle_iga
   willmore_flow_description();
   StudyDescription
   navier_stokes_description();
+  StudyDescription
+  vesicle_hydrodynamics_description();
 
   const std::vector<StudyDescription> &
   available_studies()
@@ -25,7 +27,8 @@ namespace vesicle_iga
          biharmonic_mms_description(),
          plate_with_hole_description(),
          willmore_flow_description(),
-         navier_stokes_description()};
+         navier_stokes_description(),
+         vesicle_hydrodynamics_description()};
     return studies;
   }
 } // namespace vesicle_iga

@@ -354,11 +354,11 @@ namespace vesicle_iga
                     + std::to_string(degree) + ")");
       check_input(p.kappa > 0,
                   "Bending rigidity",
-                  std::to_string(p.kappa),
+                  value_text(p.kappa),
                   "a positive value");
       check_input(epsilon_over_h >= 1,
                   "Epsilon over h",
-                  std::to_string(epsilon_over_h),
+                  value_text(epsilon_over_h),
                   ">= 1: the tanh profile (E1) has width ~2.8 eps and must "
                   "span several elements");
       monitor_settings.kappa       = p.kappa;
@@ -395,19 +395,14 @@ namespace vesicle_iga
       model_parameters.epsilon = epsilon;
       check_input(epsilon >= h_long * (1 - 1e-12),
                   "Epsilon over h",
-                  std::to_string(epsilon_over_h),
-                  "epsilon = " + std::to_string(epsilon)
+                  value_text(epsilon_over_h),
+                  "epsilon = " + value_text(epsilon)
                     + " at least the longest edge of the smallest element ("
                     + std::to_string(h_long)
                     + "): the tanh profile (E1) must span several elements");
       shape.check_fits(lower, upper, epsilon, context.pcout);
 
-      timer = std::make_unique<TimerOutput>(context.communicator,
-                                            context.pcout,
-                                            context.print_details ?
-                                              TimerOutput::summary :
-                                              TimerOutput::never,
-                                            TimerOutput::wall_times);
+      timer = context.make_timer();
       mesh  = std::make_unique<PatchMesh<dim>>(context.communicator,
                                               *space,
                                               nullptr);

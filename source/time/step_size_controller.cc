@@ -70,7 +70,7 @@ namespace vesicle_iga
     increase_delay = p.get_integer("Increase delay");
     check_input(initial_dt > 0 && initial_dt <= max_dt && min_dt <= initial_dt,
                 section + "/Initial dt",
-                std::to_string(initial_dt),
+                value_text(initial_dt),
                 "Min dt <= Initial dt <= Max dt and > 0");
   }
 

@@ -1,4 +1,9 @@
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/utilities.h>
+
+#include <vesicle_iga/base/fault_injection.h>
 #include <vesicle_iga/base/input_error.h>
+#include <vesicle_iga/base/interrupt.h>
 #include <vesicle_iga/base/solver_failure.h>
 #include <vesicle_iga/time/time_loop.h>
 
@@ -12,7 +17,9 @@ namespace vesicle_iga
   {
     /// Version of the checkpoint layout (names and meaning of the entries);
     /// raised whenever a Checkpointable changes what it writes.
-    const double checkpoint_format_version = 2;
+    /// 3: vectors carry the record of their discretisation (format 2
+    /// files, without it, are still read; their sizes are checked).
+    const double checkpoint_format_version = 3;
   } // namespace
 
   void
@@ -62,6 +69,11 @@ namespace vesicle_iga
     vtu_interval        = prm.get_integer("VTU interval");
     restart_file        = prm.get("Restart from");
     step.parse(prm, section);
+    check_input(end_time >= step.min_dt,
+                section + "/End time",
+                value_text(end_time),
+                "at least Min dt = " + value_text(step.min_dt)
+                  + " (no step may be shorter than Min dt)");
   }
 
 
@@ -111,6 +123,13 @@ namespace vesicle_iga
       return false;
     const Checkpoint c
       = Checkpoint::read(parameters.restart_file, context.communicator);
+    const double version = c.scalar("time_loop.format_version");
+    check_input(version >= 2 && version <= checkpoint_format_version,
+                "Restart from",
+                parameters.restart_file,
+                "a checkpoint of format 2 to "
+                  + value_text(checkpoint_format_version) + " (this one has "
+                  + value_text(version) + ")");
     step_number = static_cast<unsigned int>(c.scalar("time_loop.step"));
     controller.load(c, "time_loop.controller");
     for (auto &[prefix, object] : objects)
@@ -153,6 +172,10 @@ namespace vesicle_iga
   TimeLoop::take_step(TimeDependentProblem &problem)
   {
     rejected = 0;
+    // What a checkpoint written after a failed step stores: the controller
+    // as the last accepted step left it, so that a restart repeats this
+    // step as the uninterrupted run took it (not with the cut dt).
+    const StepSizeController at_start = controller;
     for (;;)
       {
         const double t  = problem.time();
@@ -171,6 +194,7 @@ namespace vesicle_iga
                             << " failed: " << failure.what() << std::endl;
             if (controller.reject_failure())
               continue;
+            controller = at_start;
             if (checkpoints)
               write_checkpoint();
             std::ostringstream s;
@@ -246,6 +270,30 @@ namespace vesicle_iga
 
 
   void
+  TimeLoop::stop_if_interrupted(const StepInfo &info) const
+  {
+    // Every rank stops after the same step, whichever ranks the signal
+    // reached.
+    const int signal = Utilities::MPI::max(InterruptHandler::signal_received(),
+                                           context.communicator);
+    if (signal == 0)
+      return;
+    if (checkpoints)
+      write_checkpoint();
+    std::ostringstream s;
+    s << "interrupted by " << InterruptHandler::name(signal) << " after step "
+      << info.step << " (t = " << info.time
+      << "): the time series up to it is in " << context.output_directory << "/"
+      << series_name;
+    if (checkpoints)
+      s << " and the state in " << context.output_directory
+        << "/checkpoint.h5; continue with 'Restart from = "
+        << context.output_directory << "/checkpoint.h5'";
+    throw RunInterrupted(s.str());
+  }
+
+
+  void
   TimeLoop::run(TimeDependentProblem &problem)
   {
     if (!series_name.empty())
@@ -259,12 +307,18 @@ namespace vesicle_iga
         TimerOutput::Scope t(timer, "output");
         output(0);
       }
-    StepInfo last{step_number, problem.time(), 0., false, {}};
+    const InterruptHandler interrupt;
+    StepInfo               last{step_number, problem.time(), 0., false, {}};
     while (problem.time() < parameters.end_time * (1 - 1e-12)
            && step_number < parameters.max_steps && !stationary)
       {
         last = take_step(problem);
         record(last, problem);
+        if (Utilities::MPI::this_mpi_process(context.communicator) == 1
+            && fault_requested("rank-1-throws"))
+          throw std::runtime_error("test fault: rank 1 fails after step "
+                                   + std::to_string(step_number));
+        stop_if_interrupted(last);
         for (auto *c : criteria)
           if (c->stationary(last))
             {

@@ -60,7 +60,32 @@ main(int argc, char *argv[])
        {"line sample reference unknown",
         "set Study = navier-stokes\nsubsection Navier-Stokes\n"
         "subsection Line sample 1\nset Name = c\nset Start = 0.5, 0\n"
-        "set End = 0.5, 1\nset Reference = ghia-1983\nend\nend\n"}};
+        "set End = 0.5, 1\nset Reference = ghia-1983\nend\nend\n"},
+       {"vesicles in 3D",
+        "set Study = vesicle-hydrodynamics\nset Dimension = 3\n"},
+       {"vesicles on quadratic splines",
+        "set Study = vesicle-hydrodynamics\n"
+        "subsection Vesicle hydrodynamics\nset Degree = 2\nend\n"},
+       {"reduced area above 1",
+        "set Study = vesicle-hydrodynamics\n"
+        "subsection Vesicle hydrodynamics\n"
+        "set Vesicles = 0, 0, 0.863, 1.2, 90\nend\n"},
+       {"vesicle too close to the boundary",
+        "set Study = vesicle-hydrodynamics\n"
+        "subsection Vesicle hydrodynamics\n"
+        "set Vesicles = 1.5, 0, 0.863, 0.84, 90\nend\n"},
+       {"overlapping vesicles",
+        "set Study = vesicle-hydrodynamics\n"
+        "subsection Vesicle hydrodynamics\n"
+        "set Vesicles = -0.2, 0, 0.7, 0.84, 90; 0.2, 0, 0.7, 0.84, 90\n"
+        "end\n"},
+       {"interface narrower than the mesh",
+        "set Study = vesicle-hydrodynamics\n"
+        "subsection Vesicle hydrodynamics\nset Epsilon = 0.05\nend\n"},
+       {"vesicle entry with three numbers",
+        "set Study = vesicle-hydrodynamics\n"
+        "subsection Vesicle hydrodynamics\n"
+        "set Vesicles = 0, 0, 0.863\nend\n"}};
   for (const auto &[name, text] : cases)
     {
       std::ofstream("case.prm") << "set Output directory = results\n" << text;

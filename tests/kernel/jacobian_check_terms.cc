@@ -14,7 +14,11 @@
 // dielectric energy with psi frozen, Neumann, traction and boundary
 // Laplacian data) must have K = 0 and an unchanged residual.
 // Checked that the test fails: with the W g'' part of the bending Jacobian
-// (E20) left out, both bending lines read FAILED.
+// (E20) left out, both bending lines read FAILED. The Part H terms get their
+// Jacobians by automatic differentiation (kernel/pointwise_term.h); here
+// they check the wiring (inputs, outputs, which pairs are integrated):
+// with the Hessian input of the bending term dropped from the probe (its
+// pairs not integrated) the bending lines read FAILED.
 
 #include <deal.II/base/function_lib.h>
 #include <deal.II/base/quadrature_lib.h>
@@ -31,10 +35,16 @@
 #include <vesicle_iga/terms/constraint_functionals.h>
 #include <vesicle_iga/terms/dielectric_energies.h>
 #include <vesicle_iga/terms/flexoelectric_energy.h>
+#include <vesicle_iga/terms/global_constraint_forcing.h>
+#include <vesicle_iga/terms/hydrodynamic_bending.h>
 #include <vesicle_iga/terms/laplace.h>
 #include <vesicle_iga/terms/linear_elasticity.h>
+#include <vesicle_iga/terms/local_inextensibility.h>
 #include <vesicle_iga/terms/navier_stokes_rbvms.h>
+#include <vesicle_iga/terms/phase_field_advection.h>
 #include <vesicle_iga/terms/rate.h>
+#include <vesicle_iga/terms/vesicle_interaction.h>
+#include <vesicle_iga/terms/viscosity_contrast.h>
 #include <vesicle_iga/terms/weak_velocity_dirichlet.h>
 
 #include <cmath>
@@ -233,6 +243,48 @@ flow_terms()
 }
 
 
+/// The vesicle terms of Part H (spec 4.13) on u, p, phi_1, phi_2, lambda_1,
+/// lambda_2 (cubic C^2: the bending term reads third derivatives). The
+/// state keeps |phi| < 0.8, where the interaction (H8) is smooth.
+template <int dim>
+void
+hydrodynamic_terms()
+{
+  std::array<KnotVector, dim> kv;
+  for (unsigned int d = 0; d < dim; ++d)
+    kv[d] = KnotVector::uniform(3, dim == 2 ? 4 : 2, 0., 1.);
+  const SplineSpace<dim> space(kv);
+  const PatchMesh<dim>   mesh(MPI_COMM_WORLD, space, nullptr);
+  FieldLayout<dim>       layout;
+  layout.add_space(space);
+  layout.add_field("velocity", dim, 0);
+  layout.add_field("pressure", 1, 0, FieldKind::algebraic);
+  layout.add_field("phi", 2, 0);
+  layout.add_field("lambda", 2, 0, FieldKind::algebraic);
+  const SplineDofHandler<dim> dofs(mesh, layout);
+  const unsigned int   phi_1 = dim + 1, phi_2 = dim + 2, lambda_1 = dim + 3;
+  MembraneCoefficients c;
+  c.epsilon          = 0.3;
+  c.reynolds_number  = 0.7;
+  c.capillary_number = 2;
+  c.viscosity_ratio  = 4;
+
+  PhaseFieldAdvection<dim> advection({0, phi_1});
+  check<dim>("advection (H16)", advection, dofs);
+  HydrodynamicBending<dim> bending({0, phi_1, c});
+  check<dim>("bending (H24)-(H25)", bending, dofs);
+  GlobalConstraintForcing<dim> constraint({0, phi_1, c});
+  constraint.get_formula().set_multipliers(0.7, -0.4);
+  check<dim>("global multipliers (H1), (H14)", constraint, dofs);
+  LocalInextensibility<dim> inextensibility({0, phi_1, lambda_1, c});
+  check<dim>("inextensibility (H17), (H14)", inextensibility, dofs);
+  VesicleInteraction<dim> interaction({0, phi_1, phi_2, c});
+  check<dim>("interaction (H10)-(H11)", interaction, dofs);
+  ViscosityContrast<dim> viscosity({0, {phi_1, phi_2}, c});
+  check<dim>("viscosity contrast (H12a)", viscosity, dofs);
+}
+
+
 int
 main(int argc, char *argv[])
 {
@@ -245,4 +297,6 @@ main(int argc, char *argv[])
   linear_terms<3>();
   flow_terms<2>();
   flow_terms<3>();
+  hydrodynamic_terms<2>();
+  hydrodynamic_terms<3>();
 }

@@ -34,6 +34,11 @@ namespace vesicle_iga
       throw InputError(parameter, value, allowed);
   }
 
+  /// @p value as the user wrote it in a .prm file (1e-14, not 0.000000), for
+  /// the value and limits in InputError messages.
+  std::string
+  value_text(double value);
+
   /// A comma-separated list of numbers from a .prm entry; InputError
   /// naming @p parameter otherwise.
   std::vector<double>

@@ -3,7 +3,13 @@
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/mpi.h>
 
+#include <memory>
 #include <string>
+
+namespace dealii
+{
+  class TimerOutput;
+}
 
 namespace vesicle_iga
 {
@@ -18,5 +24,13 @@ namespace vesicle_iga
     /// that outputs do not depend on the machine or the partition).
     bool                       print_details;
     dealii::ConditionalOStream pcout;
+
+    /// The timer of one run: prints its summary on rank 0 at the end when
+    /// 'Print details' is on. Its sections time each rank on its own (rank
+    /// 0's times are printed): a timer on the communicator would synchronise
+    /// in every section's end, so a run that fails on one rank would hang
+    /// while unwinding instead of stopping with its error.
+    std::unique_ptr<dealii::TimerOutput>
+    make_timer() const;
   };
 } // namespace vesicle_iga

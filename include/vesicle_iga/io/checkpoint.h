@@ -12,21 +12,25 @@ namespace vesicle_iga
    * A checkpoint: named vectors (full, in the natural numbering of the
    * spline basis, so that a run can restart on any number of ranks) and
    * named scalars, stored as an HDF5 file (datasets and attributes, with an
-   * index of the names). Writing goes to "<file>.tmp" and is renamed when
-   * complete, so a run killed while writing still has its previous
-   * checkpoint. Names are "<prefix>.<name>": every stateful object saves
-   * and loads itself under its prefix (Checkpointable).
+   * index of the names written last). Writing goes to "<file>.tmp", is read
+   * back and renamed when complete, so a run killed while writing still has
+   * its previous checkpoint and a half-written file is never read. Names
+   * are "<prefix>.<name>": every stateful object saves and loads itself
+   * under its prefix (Checkpointable).
    */
   struct Checkpoint
   {
     std::map<std::string, std::vector<double>> vectors;
     std::map<std::string, double>              scalars;
 
-    /// Collective; the vectors must be complete on rank 0.
+    /// Collective; the vectors must be complete on rank 0, which writes.
+    /// Throws (on every rank) a message naming the file if it cannot be
+    /// written; the previous file is then left as it was.
     void
     write(const std::string &filename, const MPI_Comm comm) const;
-    /// Collective; every rank gets everything. Throws InputError naming
-    /// "Restart from" if the file cannot be read.
+    /// Collective; rank 0 reads and every rank gets everything. Throws
+    /// InputError naming "Restart from" and what is wrong with the file
+    /// (missing, not HDF5, truncated, incomplete).
     static Checkpoint
     read(const std::string &filename, const MPI_Comm comm);
 
@@ -39,6 +43,18 @@ namespace vesicle_iga
 
     /// The file read (for messages).
     std::string source;
+
+  private:
+    /// The HDF5 file, built in memory.
+    std::vector<char>
+    file_image() const;
+    void
+    write_file(const std::string &filename) const;
+    static Checkpoint
+    read_file(const std::string &filename);
+    /// The prefixes of the vectors, for messages ("flow.*").
+    std::string
+    contents() const;
   };
 
 

@@ -16,7 +16,10 @@ namespace vesicle_iga
    * restart from step n the rows up to n are kept and the file continues;
    * if the file has other columns (written by another version), its rows
    * are rewritten in the new columns, matched by name, "nan" where the old
-   * file had no such column.
+   * file had no such column. A row cut short by a killed run is dropped,
+   * and the kept rows are rewritten through a temporary file, so that a run
+   * killed during a restart still has them. A row that cannot be written
+   * (full disk, quota) is an error on every rank, naming the file.
    */
   class TimeSeriesWriter
   {
@@ -38,7 +41,13 @@ namespace vesicle_iga
     }
 
   private:
+    /// Rank 0: the header and the kept rows; false if it cannot write.
+    bool
+    start(const long restart_step);
+
     std::vector<std::string> names;
+    std::string              filename;
+    MPI_Comm                 communicator;
     std::ofstream            file;
   };
 } // namespace vesicle_iga

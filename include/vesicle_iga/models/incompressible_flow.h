@@ -35,6 +35,34 @@ namespace vesicle_iga
     bool                                   weak = false;
   };
 
+  /**
+   * What a model adds to the flow (e.g. the vesicles of spec Part H): more
+   * fields after velocity and pressure (on the flow's space), their terms
+   * (which may also act on the momentum and continuity rows), and their
+   * strong conditions. The flow model does everything else: one Newton
+   * system, one time stepper, one checkpoint.
+   */
+  template <int dim>
+  class FlowCoupling
+  {
+  public:
+    virtual ~FlowCoupling() = default;
+    /// Add fields to @p layout (velocity and pressure are fields 0, 1 on
+    /// space 0).
+    virtual void
+    add_fields(FieldLayout<dim> &layout) const = 0;
+    /// The terms of the added fields.
+    virtual std::vector<Term<dim> *>
+    terms() = 0;
+    /// Strong conditions of the added fields at time t.
+    virtual void
+    boundary_values(const SplineDofHandler<dim> & /*dofs*/,
+                    const double /*t*/,
+                    dealii::AffineConstraints<double> & /*constraints*/) const
+    {}
+  };
+
+
   /// Settings of the flow model besides its coefficients and conditions.
   struct IncompressibleFlowParameters
   {
@@ -71,7 +99,8 @@ namespace vesicle_iga
                        const FlowCoefficients<dim>               &coefficients,
                        const std::vector<VelocityCondition<dim>> &conditions,
                        const IncompressibleFlowParameters        &parameters,
-                       dealii::TimerOutput                       &timer);
+                       dealii::TimerOutput                       &timer,
+                       FlowCoupling<dim> *coupling = nullptr);
     ~IncompressibleFlow();
 
     const SplineDofHandler<dim> &
@@ -83,6 +112,11 @@ namespace vesicle_iga
     mesh() const
     {
       return patch_mesh;
+    }
+    SystemAssembler<dim> &
+    get_assembler()
+    {
+      return assembler;
     }
     const SystemAssembler<dim> &
     get_assembler() const
@@ -100,10 +134,11 @@ namespace vesicle_iga
       return increments;
     }
 
-    /// u(t0) by Greville interpolation of @p velocity (dim + 1
-    /// components), zero pressure and rates, the boundary values at t0.
+    /// U(t0) by Greville interpolation of @p initial (one component per
+    /// component of the layout: velocity, pressure, then the coupling's
+    /// fields), zero rates, the boundary values at t0.
     void
-    set_initial_state(const dealii::Function<dim> &velocity, const double t0);
+    set_initial_state(const dealii::Function<dim> &initial, const double t0);
     /// U_n, its rate and the time (e.g. a test's state).
     void
     set_state(const dealii::TrilinosWrappers::MPI::Vector &solution,
@@ -182,5 +217,6 @@ namespace vesicle_iga
     std::unique_ptr<GeneralizedAlphaStepper<dim>>            stepper;
     NewtonSolver                                             newton;
     dealii::TrilinosWrappers::MPI::Vector                    ghosted_solution;
+    FlowCoupling<dim>                                       *coupling;
   };
 } // namespace vesicle_iga

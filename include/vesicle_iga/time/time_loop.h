@@ -219,6 +219,9 @@ namespace vesicle_iga
     record(const StepInfo &info, TimeDependentProblem &problem);
     void
     write_checkpoint() const;
+    /// After a signal (InterruptHandler): checkpoint and RunInterrupted.
+    void
+    stop_if_interrupted(const StepInfo &info) const;
 
     const Parameters                                      parameters;
     const RunContext                                     &context;

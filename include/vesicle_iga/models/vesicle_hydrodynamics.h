@@ -1,0 +1,185 @@
+#pragma once
+
+#include <vesicle_iga/models/incompressible_flow.h>
+#include <vesicle_iga/physics/hydrodynamic_membrane.h>
+#include <vesicle_iga/terms/global_constraint_forcing.h>
+#include <vesicle_iga/terms/hydrodynamic_bending.h>
+#include <vesicle_iga/terms/local_inextensibility.h>
+#include <vesicle_iga/terms/phase_field_advection.h>
+#include <vesicle_iga/terms/vesicle_interaction.h>
+#include <vesicle_iga/terms/viscosity_contrast.h>
+
+#include <functional>
+#include <memory>
+#include <vector>
+
+namespace vesicle_iga
+{
+  /// What is measured of one vesicle (spec 4.5, 4.12).
+  struct VesicleMeasures
+  {
+    /// A_i and V_i of (H12c).
+    double area = 0, volume = 0;
+    /// Centroid and inclination angle theta_i (radians) of the indicator
+    /// (1 + phi_i) / 2 (spec 4.12).
+    dealii::Point<2> centroid;
+    double           angle = 0;
+    /// (1 / (2 eps Re Ca)) int f_i^2.
+    double bending_energy = 0;
+  };
+
+
+  /**
+   * N vesicles in an incompressible flow, spec Part H in the mixed-free
+   * form of 4.13: the unknowns u, p (the flow model) and phi_i, lambda_i
+   * (i = 1..N) in one Newton system on one spline space (cubic C^2 by
+   * default: (H25) needs third derivatives of phi_i; the velocity is
+   * equal-order, which RBVMS allows), one generalized-alpha stepper.
+   * Terms per vesicle: advection (H16), bending (H24)-(H25), global
+   * multipliers (H1), local inextensibility and tension force (H17, H14);
+   * per pair: interaction (H10)-(H11); viscosity contrast (H12a) if
+   * beta_mu != 1. The RBVMS residual r_M of (H18b) carries the flow terms
+   * only (the vesicle forces are left out of it, spec 4.13), tau_M the outer
+   * viscosity. lambda_i = 0 strongly on the boundary (spec 4.10). After each
+   * accepted step the global multipliers lambda_{g,i}, lambda_{v,i} follow
+   * from the 2x2 systems (H13), which use the step just taken.
+   */
+  template <int dim>
+  class VesicleHydrodynamics : public FlowCoupling<dim>,
+                               public TimeDependentProblem,
+                               public Checkpointable
+  {
+  public:
+    VesicleHydrodynamics(const MPI_Comm                             comm,
+                         const SplineSpace<dim>                    &space,
+                         const MembraneCoefficients                &membrane,
+                         const FlowCoefficients<dim>               &flow,
+                         const std::vector<VelocityCondition<dim>> &conditions,
+                         const IncompressibleFlowParameters        &parameters,
+                         const unsigned int                         n_vesicles,
+                         dealii::TimerOutput                       &timer);
+
+    unsigned int
+    n_vesicles() const
+    {
+      return n;
+    }
+    /// Flat components of u_1, p, phi_i, lambda_i.
+    static constexpr unsigned int velocity = 0, pressure = dim;
+    unsigned int
+    phase(const unsigned int i) const
+    {
+      return dim + 1 + i;
+    }
+    unsigned int
+    tension(const unsigned int i) const
+    {
+      return dim + 1 + n + i;
+    }
+
+    /// u(x, 0) from @p velocity (dim components), phi_i(x, 0) from
+    /// @p phases, p = lambda_i = 0; A_i(0), V_i(0) and the multipliers of
+    /// (H13) from these fields.
+    void
+    set_initial_state(
+      const dealii::Function<dim> &velocity,
+      const std::vector<std::function<double(const dealii::Point<dim> &)>>
+        &phases);
+
+    IncompressibleFlow<dim> &
+    get_flow()
+    {
+      return *flow_model;
+    }
+    const IncompressibleFlow<dim> &
+    get_flow() const
+    {
+      return *flow_model;
+    }
+    /// The measures of every vesicle at time().
+    std::vector<VesicleMeasures>
+    measure() const;
+    /// A_i(0), V_i(0).
+    const std::vector<double> &
+    initial_areas() const
+    {
+      return area_0;
+    }
+    const std::vector<double> &
+    initial_volumes() const
+    {
+      return volume_0;
+    }
+    /// lambda_{g,i}, lambda_{v,i} used in the next step.
+    const std::vector<double> &
+    area_multipliers() const
+    {
+      return lambda_g;
+    }
+    const std::vector<double> &
+    volume_multipliers() const
+    {
+      return lambda_v;
+    }
+    /// E_int of (H10), summed over pairs.
+    double
+    interaction_energy() const;
+    /// The advection power of the bending pairing, b(f_i; u . grad phi_i)
+    /// summed over i, and the power of its momentum forcing with w = u:
+    /// equal up to round-off by construction of (H24)-(H25) (spec 4.13).
+    std::pair<double, double>
+    bending_powers() const;
+
+    // FlowCoupling
+    void
+    add_fields(FieldLayout<dim> &layout) const override;
+    std::vector<Term<dim> *>
+    terms() override;
+    void
+    boundary_values(const SplineDofHandler<dim>       &dofs,
+                    const double                       t,
+                    dealii::AffineConstraints<double> &c) const override;
+
+    // TimeDependentProblem
+    double
+    time() const override
+    {
+      return flow_model->time();
+    }
+    StepReport
+    solve_step(const double dt) override;
+    double
+    local_error(const double atol, const double rtol) const override
+    {
+      return flow_model->get_stepper().local_error(atol, rtol);
+    }
+    void
+    accept_step() override;
+
+    // Checkpointable
+    void
+    save(Checkpoint &c, const std::string &prefix) const override;
+    void
+    load(const Checkpoint &c, const std::string &prefix) override;
+
+  private:
+    /// Solve (H13) for every vesicle with the current fields; @p dt: the
+    /// step just taken (0: no relaxation terms, the initial state).
+    void
+    update_multipliers(const double dt);
+
+    const MembraneCoefficients                             membrane;
+    const FlowCoefficients<dim>                            flow_coefficients;
+    const unsigned int                                     n;
+    std::vector<std::unique_ptr<PhaseFieldAdvection<dim>>> advection;
+    std::vector<std::unique_ptr<HydrodynamicBending<dim>>> bending;
+    std::vector<std::unique_ptr<GlobalConstraintForcing<dim>>> constraint;
+    std::vector<std::unique_ptr<LocalInextensibility<dim>>>    inextensibility;
+    std::vector<std::unique_ptr<VesicleInteraction<dim>>>      interaction;
+    std::vector<std::pair<unsigned int, unsigned int>>         pairs;
+    std::unique_ptr<ViscosityContrast<dim>>                    viscosity;
+    std::unique_ptr<IncompressibleFlow<dim>>                   flow_model;
+    std::vector<double> area_0, volume_0, lambda_g, lambda_v;
+    double              last_dt = 0;
+  };
+} // namespace vesicle_iga

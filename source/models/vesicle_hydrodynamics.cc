@@ -1,0 +1,608 @@
+// N vesicles in an RBVMS flow, spec Part H (4.3-4.13), mixed-free (4.13):
+// the fields and terms of the vesicles coupled to IncompressibleFlow, the
+// global multipliers (H13), the measures of 4.12.
+
+#include <deal.II/base/function.h>
+
+#include <vesicle_iga/base/input_error.h>
+#include <vesicle_iga/fields/dirichlet_constraints.h>
+#include <vesicle_iga/models/vesicle_hydrodynamics.h>
+
+#include <cmath>
+
+namespace vesicle_iga
+{
+  using namespace dealii;
+
+  namespace
+  {
+    /// Per vesicle: A (H12c), V, and the zeroth, first and second moments
+    /// of the indicator c = (1 + phi) / 2 (spec 4.12).
+    template <int dim>
+    class VesicleGeometry : public Integrand<dim>
+    {
+    public:
+      VesicleGeometry(const unsigned int phi, const double eps)
+        : phi(phi)
+        , eps(eps)
+      {}
+      unsigned int
+      n_values() const override
+      {
+        return 8;
+      }
+      void
+      declare(TermDeclaration<dim> &d) override
+      {
+        value = d.value(phi, Derivative<dim>::value);
+        for (unsigned int k = 0; k < dim; ++k)
+          gradient[k] = d.value(phi, Derivative<dim>::gradient(k));
+        d.needs_points();
+      }
+      void
+      integrate(const QuadratureInputs<dim> &in,
+                const double                *JxW,
+                double                      *sums) const override
+      {
+        for (unsigned int q = 0; q < in.size(); ++q)
+          {
+            const double p  = in[value][q];
+            double       g2 = 0;
+            for (unsigned int k = 0; k < dim; ++k)
+              g2 += in[gradient[k]][q] * in[gradient[k]][q];
+            const double c = 0.5 * (1 + p), x = in.point(q)[0],
+                         y = in.point(q)[1], w = JxW[q];
+            sums[0]
+              += (0.5 * eps * g2 + (p * p - 1) * (p * p - 1) / (4 * eps)) * w;
+            sums[1] += p * w;
+            sums[2] += c * w;
+            sums[3] += c * x * w;
+            sums[4] += c * y * w;
+            sums[5] += c * x * x * w;
+            sums[6] += c * x * y * w;
+            sums[7] += c * y * y * w;
+          }
+      }
+
+    private:
+      const unsigned int           phi;
+      const double                 eps;
+      InputHandle                  value;
+      std::array<InputHandle, dim> gradient;
+    };
+
+
+    /// The integrals of (H13) for vesicle i: |Omega|, int f, int f^2,
+    /// int u.grad phi, int (u.grad phi) f, int g, int g f, int vs, int vs f,
+    /// with int g = -c int s f and int g f = -c int (|grad f|^2 + s f^2)
+    /// (H3 integrated by parts with d_n f = 0), s = (3 phi^2 - 1) / eps^2,
+    /// vs_i = sum over j != i of (H11).
+    template <int dim>
+    class MultiplierIntegrals : public Integrand<dim>
+    {
+    public:
+      MultiplierIntegrals(const unsigned int               i,
+                          const std::vector<unsigned int> &phases,
+                          const MembraneCoefficients      &coefficients)
+        : i(i)
+        , phases(phases)
+        , coefficients(coefficients)
+        , potential(0, 0, 0, coefficients)
+      {}
+      unsigned int
+      n_values() const override
+      {
+        return 9;
+      }
+      void
+      declare(TermDeclaration<dim> &d) override
+      {
+        using D = Derivative<dim>;
+        for (unsigned int a = 0; a < dim; ++a)
+          u[a] = d.value(a, D::value);
+        values.clear();
+        for (const unsigned int phi : phases)
+          values.push_back(d.value(phi, D::value));
+        laplacian = d.value(phases[i], D::laplacian);
+        for (unsigned int k = 0; k < dim; ++k)
+          {
+            gradient[k] = d.value(phases[i], D::gradient(k));
+            gradient_of_laplacian[k]
+              = d.value(phases[i], D::gradient_of_laplacian(k));
+          }
+      }
+      void
+      integrate(const QuadratureInputs<dim> &in,
+                const double                *JxW,
+                double                      *sums) const override
+      {
+        const double eps = coefficients.epsilon;
+        const double c   = coefficients.bending_factor();
+        for (unsigned int q = 0; q < in.size(); ++q)
+          {
+            const double p = in[values[i]][q];
+            const double f
+              = membrane::chemical_potential(p, in[laplacian][q], eps);
+            const double s         = (3 * p * p - 1) / (eps * eps);
+            double       advection = 0, grad_f2 = 0;
+            for (unsigned int k = 0; k < dim; ++k)
+              {
+                advection += in[u[k]][q] * in[gradient[k]][q];
+                const double df = eps * in[gradient_of_laplacian[k]][q]
+                                  - (3 * p * p - 1) / eps * in[gradient[k]][q];
+                grad_f2 += df * df;
+              }
+            double vs = 0;
+            for (unsigned int j = 0; j < phases.size(); ++j)
+              if (j != i)
+                vs += potential.potential(p, in[values[j]][q]);
+            const double w = JxW[q];
+            sums[0] += w;
+            sums[1] += f * w;
+            sums[2] += f * f * w;
+            sums[3] += advection * w;
+            sums[4] += advection * f * w;
+            sums[5] += -c * s * f * w;
+            sums[6] += -c * (grad_f2 + s * f * f) * w;
+            sums[7] += vs * w;
+            sums[8] += vs * f * w;
+          }
+      }
+
+    private:
+      const unsigned int                   i;
+      const std::vector<unsigned int>      phases;
+      const MembraneCoefficients           coefficients;
+      const VesicleInteractionFormula<dim> potential;
+      std::array<InputHandle, dim>         u, gradient, gradient_of_laplacian;
+      std::vector<InputHandle>             values;
+      InputHandle                          laplacian;
+    };
+
+
+    /// b(f; u . grad phi) of (H24)-(H25) summed over the vesicles, written
+    /// out with Delta(u . grad phi) expanded (spec 4.13), independently of
+    /// the term's momentum rows.
+    template <int dim>
+    class BendingAdvectionPower : public Integrand<dim>
+    {
+    public:
+      BendingAdvectionPower(const std::vector<unsigned int> &phases,
+                            const MembraneCoefficients      &coefficients)
+        : phases(phases)
+        , coefficients(coefficients)
+      {}
+      unsigned int
+      n_values() const override
+      {
+        return 1;
+      }
+      void
+      declare(TermDeclaration<dim> &d) override
+      {
+        using D = Derivative<dim>;
+        for (unsigned int a = 0; a < dim; ++a)
+          {
+            u[a]   = d.value(a, D::value);
+            lap[a] = d.value(a, D::laplacian);
+            for (unsigned int k = 0; k < dim; ++k)
+              grad_u[a][k] = d.value(a, D::gradient(k));
+          }
+        fields.clear();
+        for (const unsigned int phi : phases)
+          {
+            Phase f;
+            f.value     = d.value(phi, D::value);
+            f.laplacian = d.value(phi, D::laplacian);
+            for (unsigned int k = 0; k < dim; ++k)
+              {
+                f.gradient[k] = d.value(phi, D::gradient(k));
+                f.gradient_of_laplacian[k]
+                  = d.value(phi, D::gradient_of_laplacian(k));
+                for (unsigned int l = 0; l < dim; ++l)
+                  f.hessian[k][l] = d.value(phi, D::hessian(k, l));
+              }
+            fields.push_back(f);
+          }
+      }
+      void
+      integrate(const QuadratureInputs<dim> &in,
+                const double                *JxW,
+                double                      *sums) const override
+      {
+        const double eps = coefficients.epsilon;
+        const double c   = coefficients.bending_factor();
+        for (const Phase &ph : fields)
+          for (unsigned int q = 0; q < in.size(); ++q)
+            {
+              const double p = in[ph.value][q];
+              const double f
+                = membrane::chemical_potential(p, in[ph.laplacian][q], eps);
+              double v = 0, lap_v = 0;
+              for (unsigned int a = 0; a < dim; ++a)
+                {
+                  const double g = in[ph.gradient[a]][q];
+                  v += in[u[a]][q] * g;
+                  lap_v += in[lap[a]][q] * g
+                           + in[u[a]][q] * in[ph.gradient_of_laplacian[a]][q];
+                  for (unsigned int k = 0; k < dim; ++k)
+                    lap_v += 2 * in[grad_u[a][k]][q] * in[ph.hessian[a][k]][q];
+                }
+              sums[0] += c * (f * lap_v - (3 * p * p - 1) / (eps * eps) * f * v)
+                         * JxW[q];
+            }
+      }
+
+    private:
+      struct Phase
+      {
+        InputHandle                                   value, laplacian;
+        std::array<InputHandle, dim>                  gradient;
+        std::array<InputHandle, dim>                  gradient_of_laplacian;
+        std::array<std::array<InputHandle, dim>, dim> hessian;
+      };
+      const std::vector<unsigned int>               phases;
+      const MembraneCoefficients                    coefficients;
+      std::array<InputHandle, dim>                  u, lap;
+      std::array<std::array<InputHandle, dim>, dim> grad_u;
+      std::vector<Phase>                            fields;
+    };
+
+
+    /// The initial state as one function of all components.
+    template <int dim>
+    class InitialFields : public Function<dim>
+    {
+    public:
+      InitialFields(
+        const unsigned int   n_components,
+        const Function<dim> &velocity,
+        const std::vector<std::function<double(const Point<dim> &)>> &phases)
+        : Function<dim>(n_components)
+        , velocity(velocity)
+        , phases(phases)
+      {}
+      double
+      value(const Point<dim> &x, const unsigned int c) const override
+      {
+        if (c < dim)
+          return velocity.value(x, c);
+        if (c > dim && c <= dim + phases.size())
+          return phases[c - dim - 1](x);
+        return 0;
+      }
+
+    private:
+      const Function<dim>                                          &velocity;
+      const std::vector<std::function<double(const Point<dim> &)>> &phases;
+    };
+  } // namespace
+
+
+  template <int dim>
+  VesicleHydrodynamics<dim>::VesicleHydrodynamics(
+    const MPI_Comm                             comm,
+    const SplineSpace<dim>                    &space,
+    const MembraneCoefficients                &membrane,
+    const FlowCoefficients<dim>               &flow,
+    const std::vector<VelocityCondition<dim>> &conditions,
+    const IncompressibleFlowParameters        &parameters,
+    const unsigned int                         n_vesicles,
+    TimerOutput                               &timer)
+    : membrane(membrane)
+    , flow_coefficients(flow)
+    , n(n_vesicles)
+    , area_0(n_vesicles)
+    , volume_0(n_vesicles)
+    , lambda_g(n_vesicles)
+    , lambda_v(n_vesicles)
+  {
+    std::vector<unsigned int> phases;
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        phases.push_back(phase(i));
+        advection.push_back(std::make_unique<PhaseFieldAdvection<dim>>(
+          PhaseFieldAdvectionFormula<dim>(velocity, phase(i))));
+        bending.push_back(std::make_unique<HydrodynamicBending<dim>>(
+          HydrodynamicBendingFormula<dim>(velocity, phase(i), membrane)));
+        constraint.push_back(std::make_unique<GlobalConstraintForcing<dim>>(
+          GlobalConstraintForcingFormula<dim>(velocity, phase(i), membrane)));
+        inextensibility.push_back(std::make_unique<LocalInextensibility<dim>>(
+          LocalInextensibilityFormula<dim>(
+            velocity, phase(i), tension(i), membrane)));
+        for (unsigned int j = 0; j < i && membrane.interaction; ++j)
+          {
+            pairs.emplace_back(j, i);
+            interaction.push_back(std::make_unique<VesicleInteraction<dim>>(
+              VesicleInteractionFormula<dim>(
+                velocity, phase(j), phase(i), membrane)));
+          }
+      }
+    if (membrane.viscosity_ratio != 1)
+      viscosity = std::make_unique<ViscosityContrast<dim>>(
+        ViscosityContrastFormula<dim>(velocity, phases, membrane));
+    flow_model = std::make_unique<IncompressibleFlow<dim>>(
+      comm, space, flow_coefficients, conditions, parameters, timer, this);
+  }
+
+
+  template <int dim>
+  void
+  VesicleHydrodynamics<dim>::add_fields(FieldLayout<dim> &layout) const
+  {
+    for (unsigned int i = 0; i < n; ++i)
+      layout.add_field("phi_" + std::to_string(i + 1),
+                       1,
+                       0,
+                       FieldKind::differential);
+    for (unsigned int i = 0; i < n; ++i)
+      layout.add_field("lambda_" + std::to_string(i + 1),
+                       1,
+                       0,
+                       FieldKind::algebraic);
+  }
+
+
+  template <int dim>
+  std::vector<Term<dim> *>
+  VesicleHydrodynamics<dim>::terms()
+  {
+    std::vector<Term<dim> *> list;
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        list.push_back(advection[i].get());
+        list.push_back(bending[i].get());
+        list.push_back(constraint[i].get());
+        list.push_back(inextensibility[i].get());
+      }
+    for (auto &term : interaction)
+      list.push_back(term.get());
+    if (viscosity)
+      list.push_back(viscosity.get());
+    return list;
+  }
+
+
+  template <int dim>
+  void
+  VesicleHydrodynamics<dim>::boundary_values(const SplineDofHandler<dim> &dofs,
+                                             const double,
+                                             AffineConstraints<double> &c) const
+  {
+    // lambda_i = 0 on the whole (non-periodic) boundary, spec 4.10.
+    std::vector<bool> mask(dofs.n_components(), false);
+    for (unsigned int i = 0; i < n; ++i)
+      mask[tension(i)] = true;
+    const BoundarySelection<dim> everywhere("all", "lambda boundary");
+    add_strong_dirichlet_constraints<dim>(dofs,
+                                          nullptr,
+                                          everywhere,
+                                          Functions::ZeroFunction<dim>(
+                                            dofs.n_components()),
+                                          mask,
+                                          c);
+  }
+
+
+  template <int dim>
+  void
+  VesicleHydrodynamics<dim>::set_initial_state(
+    const Function<dim>                                          &velocity,
+    const std::vector<std::function<double(const Point<dim> &)>> &phases)
+  {
+    AssertThrow(phases.size() == n, ExcDimensionMismatch(phases.size(), n));
+    const InitialFields<dim> initial(flow_model->dofs().n_components(),
+                                     velocity,
+                                     phases);
+    flow_model->set_initial_state(initial, 0.);
+    const auto measures = measure();
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        area_0[i]   = measures[i].area;
+        volume_0[i] = measures[i].volume;
+      }
+    update_multipliers(0);
+  }
+
+
+  template <int dim>
+  std::vector<VesicleMeasures>
+  VesicleHydrodynamics<dim>::measure() const
+  {
+    std::vector<std::unique_ptr<Integrand<dim>>> owned;
+    std::vector<Integrand<dim> *>                list;
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        owned.push_back(
+          std::make_unique<VesicleGeometry<dim>>(phase(i), membrane.epsilon));
+        owned.push_back(
+          std::make_unique<HydrodynamicBendingEnergy<dim>>(phase(i), membrane));
+      }
+    for (auto &o : owned)
+      list.push_back(o.get());
+    AssemblyState state;
+    state.value     = &flow_model->solution();
+    const auto sums = flow_model->get_assembler().integrate(list, state);
+    std::vector<VesicleMeasures> result(n);
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        const double *s  = &sums[9 * i];
+        auto         &m  = result[i];
+        m.area           = s[0];
+        m.volume         = s[1];
+        m.centroid       = Point<2>(s[3] / s[2], s[4] / s[2]);
+        const double Ixx = s[5] / s[2] - m.centroid[0] * m.centroid[0];
+        const double Ixy = s[6] / s[2] - m.centroid[0] * m.centroid[1];
+        const double Iyy = s[7] / s[2] - m.centroid[1] * m.centroid[1];
+        // Spec 4.12: angle of the major principal axis to the x axis.
+        m.angle = 0.5 * std::atan2(2 * Ixy, Ixx - Iyy);
+        // atan2 returns pi and -pi for the same axis; an axis is a line,
+        // so report it in (-pi/2, pi/2].
+        if (m.angle <= -0.5 * numbers::PI + 1e-12)
+          m.angle += numbers::PI;
+        m.bending_energy = s[8];
+      }
+    return result;
+  }
+
+
+  template <int dim>
+  double
+  VesicleHydrodynamics<dim>::interaction_energy() const
+  {
+    if (pairs.empty())
+      return 0;
+    std::vector<std::unique_ptr<Integrand<dim>>> owned;
+    std::vector<Integrand<dim> *>                list;
+    for (unsigned int k = 0; k < pairs.size(); ++k)
+      {
+        owned.push_back(std::make_unique<InteractionEnergy<dim>>(
+          phase(pairs[k].first),
+          phase(pairs[k].second),
+          interaction[k]->get_formula()));
+        list.push_back(owned.back().get());
+      }
+    AssemblyState state;
+    state.value     = &flow_model->solution();
+    const auto sums = flow_model->get_assembler().integrate(list, state);
+    double     sum  = 0;
+    for (const double s : sums)
+      sum += s;
+    return sum;
+  }
+
+
+  template <int dim>
+  std::pair<double, double>
+  VesicleHydrodynamics<dim>::bending_powers() const
+  {
+    std::vector<unsigned int> phases;
+    for (unsigned int i = 0; i < n; ++i)
+      phases.push_back(phase(i));
+    BendingAdvectionPower<dim> power(phases, membrane);
+    AssemblyState              state;
+    state.value            = &flow_model->solution();
+    const auto  &assembler = flow_model->get_assembler();
+    const double advection = assembler.integrate({&power}, state)[0];
+
+    // The momentum rows of the bending terms, contracted with the velocity
+    // coefficients: -(forcing, u).
+    SystemAssembler<dim> rows(flow_model->dofs(), assembler.get_quadrature());
+    for (const auto &term : bending)
+      rows.add_term(*term);
+    const auto                     &dofs = flow_model->dofs();
+    TrilinosWrappers::MPI::Vector   residual(dofs.locally_owned_dofs(),
+                                           dofs.get_mesh().get_communicator());
+    const AffineConstraints<double> none;
+    rows.assemble(state, none, &residual, nullptr);
+    const unsigned int nc      = dofs.n_components();
+    double             forcing = 0;
+    for (const auto g : dofs.locally_owned_dofs())
+      if (g % nc < dim)
+        forcing -= residual[g] * flow_model->owned_solution()[g];
+    forcing = Utilities::MPI::sum(forcing, dofs.get_mesh().get_communicator());
+    return {advection, forcing};
+  }
+
+
+  template <int dim>
+  void
+  VesicleHydrodynamics<dim>::update_multipliers(const double dt)
+  {
+    std::vector<unsigned int> phases;
+    for (unsigned int i = 0; i < n; ++i)
+      phases.push_back(phase(i));
+    std::vector<std::unique_ptr<Integrand<dim>>> owned;
+    std::vector<Integrand<dim> *>                list;
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        owned.push_back(
+          std::make_unique<MultiplierIntegrals<dim>>(i, phases, membrane));
+        list.push_back(owned.back().get());
+      }
+    AssemblyState state;
+    state.value           = &flow_model->solution();
+    const auto   sums     = flow_model->get_assembler().integrate(list, state);
+    const auto   measures = measure();
+    const double eta      = membrane.mobility;
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        const double *s = &sums[9 * i];
+        // (H13): [|Omega|, int f; int f, int f^2] (lambda_v, lambda_g) = b.
+        double b_v = s[3] / eta + s[5] + s[7];
+        double b_g = s[4] / eta + s[6] + s[8];
+        if (dt > 0)
+          {
+            b_v += (volume_0[i] - measures[i].volume) / (2 * dt);
+            b_g -= (area_0[i] - measures[i].area) / (2 * dt);
+          }
+        const double det = s[0] * s[2] - s[1] * s[1];
+        AssertThrow(det > 0,
+                    ExcMessage("(H13) is singular for vesicle "
+                               + std::to_string(i + 1)
+                               + ": f is constant (no interface)"));
+        lambda_v[i] = (s[2] * b_v - s[1] * b_g) / det;
+        lambda_g[i] = (s[0] * b_g - s[1] * b_v) / det;
+        constraint[i]->get_formula().set_multipliers(lambda_g[i], lambda_v[i]);
+      }
+  }
+
+
+  template <int dim>
+  StepReport
+  VesicleHydrodynamics<dim>::solve_step(const double dt)
+  {
+    last_dt = dt;
+    return flow_model->solve_step(dt);
+  }
+
+
+  template <int dim>
+  void
+  VesicleHydrodynamics<dim>::accept_step()
+  {
+    flow_model->accept_step();
+    update_multipliers(last_dt);
+  }
+
+
+  template <int dim>
+  void
+  VesicleHydrodynamics<dim>::save(Checkpoint        &c,
+                                  const std::string &prefix) const
+  {
+    flow_model->save(c, prefix + ".flow");
+    c.vectors[prefix + ".initial_areas"]      = area_0;
+    c.vectors[prefix + ".initial_volumes"]    = volume_0;
+    c.vectors[prefix + ".area_multipliers"]   = lambda_g;
+    c.vectors[prefix + ".volume_multipliers"] = lambda_v;
+  }
+
+
+  template <int dim>
+  void
+  VesicleHydrodynamics<dim>::load(const Checkpoint  &c,
+                                  const std::string &prefix)
+  {
+    flow_model->load(c, prefix + ".flow");
+    const auto get = [&](const std::string &name, std::vector<double> &v) {
+      const auto &stored = c.vector(prefix + "." + name);
+      check_input(stored.size() == n,
+                  "Time stepping/Restart from",
+                  c.source,
+                  "a checkpoint of " + std::to_string(n)
+                    + " vesicles (it holds " + std::to_string(stored.size())
+                    + ")");
+      v = stored;
+    };
+    get("initial_areas", area_0);
+    get("initial_volumes", volume_0);
+    get("area_multipliers", lambda_g);
+    get("volume_multipliers", lambda_v);
+    for (unsigned int i = 0; i < n; ++i)
+      constraint[i]->get_formula().set_multipliers(lambda_g[i], lambda_v[i]);
+  }
+
+  template class VesicleHydrodynamics<2>;
+  template class VesicleHydrodynamics<3>;
+} // namespace vesicle_iga

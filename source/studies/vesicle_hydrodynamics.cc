@@ -1,0 +1,528 @@
+// Study "vesicle-hydrodynamics": N vesicles in an RBVMS flow, spec Part H
+// (4.1-4.13, studies 6.3) in the mixed-free form of 4.13: initial ellipses
+// (H23), velocity boundaries of spec 4.10 (strong, weak, stress-free,
+// periodic), the one time loop with checkpoints; time series of the area
+// and volume errors, centroids, inclination angles and global multipliers
+// of every vesicle and of the kinetic, bending and interaction energies
+// (spec 4.12); VTU of u, p, vorticity, phi_i and lambda_i.
+
+#include <deal.II/base/timer.h>
+#include <deal.II/base/utilities.h>
+
+#include <vesicle_iga/base/input_error.h>
+#include <vesicle_iga/io/spline_output.h>
+#include <vesicle_iga/models/vesicle_hydrodynamics.h>
+#include <vesicle_iga/physics/initial_vesicle.h>
+#include <vesicle_iga/spline/box_space_parameters.h>
+#include <vesicle_iga/studies/flow_study_parts.h>
+#include <vesicle_iga/studies/study.h>
+
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+namespace vesicle_iga
+{
+  using namespace dealii;
+
+  namespace
+  {
+    const char        *section      = "Vesicle hydrodynamics";
+    const unsigned int n_boundaries = 4;
+
+
+    /// Per vesicle: area and volume errors (spec 4.12), centroid,
+    /// inclination angle, global multipliers; then the kinetic, bending,
+    /// interaction and total energies.
+    template <int dim>
+    class HydrodynamicsMonitor : public Monitor
+    {
+    public:
+      explicit HydrodynamicsMonitor(const VesicleHydrodynamics<dim> &model)
+        : model(model)
+      {}
+      std::vector<std::string>
+      columns() const override
+      {
+        std::vector<std::string> c;
+        for (unsigned int i = 1; i <= model.n_vesicles(); ++i)
+          for (const std::string name : {"area_error_",
+                                         "volume_error_",
+                                         "x_",
+                                         "y_",
+                                         "theta_",
+                                         "lambda_g_",
+                                         "lambda_v_"})
+            c.push_back(name + std::to_string(i));
+        c.insert(c.end(),
+                 {"kinetic_energy",
+                  "bending_energy",
+                  "interaction_energy",
+                  "total_energy"});
+        return c;
+      }
+      void
+      measure(const StepInfo &,
+              std::vector<double> &row,
+              std::ostream        &progress) override
+      {
+        const auto measures = model.measure();
+        double     bending = 0, worst_area = 0, worst_volume = 0;
+        for (unsigned int i = 0; i < model.n_vesicles(); ++i)
+          {
+            const auto  &m = measures[i];
+            const double area_error
+              = (m.area - model.initial_areas()[i]) / model.initial_areas()[i];
+            const double volume_error = (m.volume - model.initial_volumes()[i])
+                                        / model.initial_volumes()[i];
+            row.insert(row.end(),
+                       {area_error,
+                        volume_error,
+                        m.centroid[0],
+                        m.centroid[1],
+                        m.angle,
+                        model.area_multipliers()[i],
+                        model.volume_multipliers()[i]});
+            bending += m.bending_energy;
+            worst_area   = std::max(worst_area, std::abs(area_error));
+            worst_volume = std::max(worst_volume, std::abs(volume_error));
+          }
+        const double kinetic
+          = model.get_flow().kinetic_energy_and_divergence().first;
+        const double interaction = model.interaction_energy();
+        row.insert(
+          row.end(),
+          {kinetic, bending, interaction, kinetic + bending + interaction});
+        progress << " E_kin=" << kinetic << " E_B=" << bending
+                 << " E_int=" << interaction << " |dA/A|=" << worst_area
+                 << " |dV/V|=" << worst_volume;
+      }
+
+    private:
+      const VesicleHydrodynamics<dim> &model;
+    };
+
+
+    /// One vesicle of the 'Vesicles' list.
+    struct VesicleEntry
+    {
+      Point<2> centre;
+      double   radius, reduced_area, angle;
+    };
+
+
+    template <int dim>
+    class VesicleHydrodynamicsStudy : public Study
+    {
+    public:
+      VesicleHydrodynamicsStudy(ParameterHandler &prm, RunContext &context);
+      void
+      run() override;
+
+    private:
+      void
+      check_vesicles(const SplineSpace<dim> &space) const;
+
+      RunContext                    &context;
+      BoxSpaceParameters             box;
+      unsigned int                   degree;
+      int                            continuity;
+      MembraneCoefficients           membrane;
+      FlowBoundaryParameters         boundaries;
+      IncompressibleFlowParameters   flow_parameters;
+      TimeLoop::Parameters           loop_parameters;
+      std::vector<VesicleEntry>      vesicles;
+      InitialVesicle::StretchFormula stretch;
+      std::string                    initial_velocity;
+      bool                           write_vtu;
+    };
+
+
+    template <int dim>
+    VesicleHydrodynamicsStudy<dim>::VesicleHydrodynamicsStudy(
+      ParameterHandler &prm,
+      RunContext       &context)
+      : context(context)
+    {
+      const std::string prefix = std::string(section) + "/";
+      check_input(dim == 2,
+                  "Dimension",
+                  std::to_string(dim),
+                  "2 (the Part H studies of spec 6.3 are 2D; 3D vesicles in "
+                  "a flow are not available yet)");
+      prm.enter_subsection(section);
+      box.parse(prm, dim);
+      degree     = prm.get_integer("Degree");
+      continuity = prm.get_integer("Continuity");
+      flow_parameters.solver.parse_flow(prm);
+      flow_parameters.newton.parse(prm);
+      membrane.reynolds_number    = prm.get_double("Reynolds number");
+      membrane.capillary_number   = prm.get_double("Capillary number");
+      membrane.interaction_number = prm.get_double("Interaction number");
+      membrane.interaction        = prm.get_bool("Interaction");
+      membrane.mobility           = prm.get_double("Mobility");
+      membrane.inextensibility_xi = prm.get_double("Inextensibility xi");
+      membrane.viscosity_ratio    = prm.get_double("Viscosity ratio");
+      membrane.epsilon            = prm.get_double("Epsilon");
+      flow_parameters.weak_penalty_constant
+        = prm.get_double("Weak penalty constant");
+      flow_parameters.weak_inflow_term = prm.get_bool("Weak inflow term");
+      const int quadrature             = prm.get_integer("Quadrature points");
+      flow_parameters.quadrature_points
+        = quadrature > 0 ? quadrature : degree + 2;
+      stretch                        = prm.get("Stretch formula") == "exact" ?
+                                         InitialVesicle::StretchFormula::exact :
+                                         InitialVesicle::StretchFormula::quadratic_mean;
+      initial_velocity               = prm.get("Initial velocity");
+      write_vtu                      = prm.get_bool("Write VTU");
+      const std::string vesicle_text = prm.get("Vesicles");
+      boundaries.parse(prm, n_boundaries);
+      prm.enter_subsection("Time stepping");
+      loop_parameters.parse(prm, prefix + "Time stepping");
+      flow_parameters.time_integration.parse(prm);
+      prm.leave_subsection();
+      prm.leave_subsection();
+
+      // Report bad input before any work.
+      for (const auto &[name, value] :
+           std::vector<std::pair<std::string, double>>{
+             {"Reynolds number", membrane.reynolds_number},
+             {"Capillary number", membrane.capillary_number},
+             {"Interaction number", membrane.interaction_number},
+             {"Mobility", membrane.mobility},
+             {"Inextensibility xi", membrane.inextensibility_xi},
+             {"Viscosity ratio", membrane.viscosity_ratio},
+             {"Epsilon", membrane.epsilon}})
+        check_input(std::isfinite(value) && value > 0,
+                    prefix + name,
+                    value_text(value),
+                    "a finite number > 0");
+      const int smoothness = continuity < 0 ? int(degree) - 1 : continuity;
+      check_input(degree >= 3,
+                  prefix + "Degree",
+                  std::to_string(degree),
+                  ">= 3: the bending force (H25) needs third derivatives of "
+                  "phi_i (spec 4.13)");
+      check_input(smoothness >= 2,
+                  prefix + "Continuity",
+                  std::to_string(continuity),
+                  "-1 (C^{p-1}) or >= 2: (H24)-(H25) need phi_i in H^2 with "
+                  "continuous second derivatives (spec 4.13)");
+      for (const auto &text : Utilities::split_string_list(vesicle_text, ';'))
+        {
+          const auto          parts = Utilities::split_string_list(text, ',');
+          std::vector<double> v;
+          try
+            {
+              for (const auto &p : parts)
+                {
+                  std::size_t used = 0;
+                  v.push_back(std::stod(p, &used));
+                  if (used != p.size() || !std::isfinite(v.back()))
+                    v.clear();
+                }
+            }
+          catch (...)
+            {
+              v.clear();
+            }
+          check_input(v.size() == 5,
+                      prefix + "Vesicles",
+                      text,
+                      "'x, y, R_0, chi, angle' per vesicle (finite numbers; "
+                      "vesicles separated by ';')");
+          const std::string which
+            = " (vesicle " + std::to_string(vesicles.size() + 1) + ")";
+          check_input(v[2] > 0, prefix + "Vesicles", text, "R_0 > 0" + which);
+          check_input(v[3] > 0 && v[3] <= 1,
+                      prefix + "Vesicles",
+                      text,
+                      "reduced area chi in (0, 1]" + which);
+          vesicles.push_back({Point<2>(v[0], v[1]), v[2], v[3], v[4]});
+        }
+      check_input(!vesicles.empty(),
+                  prefix + "Vesicles",
+                  vesicle_text,
+                  "at least one vesicle 'x, y, R_0, chi, angle'");
+      const SplineSpace<dim> space = box.make_space<dim>(degree, continuity);
+      check_vesicles(space);
+      bool level_fixed;
+      boundaries.conditions<dim>(prefix,
+                                 membrane.reynolds_number,
+                                 box.periodic,
+                                 level_fixed);
+      parse_formula<dim>(initial_velocity,
+                         dim,
+                         0,
+                         membrane.reynolds_number,
+                         prefix + "Initial velocity");
+    }
+
+
+    template <int dim>
+    void
+    VesicleHydrodynamicsStudy<dim>::check_vesicles(
+      const SplineSpace<dim> &space) const
+    {
+      const std::string prefix = std::string(section) + "/Vesicles";
+      const double      eps    = membrane.epsilon;
+      std::vector<std::vector<Point<2>>> outlines;
+      std::vector<InitialVesicle>        shapes;
+      double lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};
+      for (unsigned int i = 0; i < vesicles.size(); ++i)
+        {
+          const auto &v = vesicles[i];
+          shapes.emplace_back(
+            v.centre, v.radius, v.reduced_area, v.angle, stretch);
+          outlines.push_back(shapes.back().outline(720));
+          const std::string name = "vesicle " + std::to_string(i + 1);
+          for (const auto &x : outlines.back())
+            for (unsigned int d = 0; d < 2; ++d)
+              {
+                lo[d] = std::min(lo[d], x[d]);
+                hi[d] = std::max(hi[d], x[d]);
+                // A membrane closer than 2 eps to a wall (spec 4.10: the
+                // natural conditions need phi = -1 near the boundary).
+                if (!box.periodic[d])
+                  check_input(x[d] - box.lower[d] >= 2 * eps
+                                && box.upper[d] - x[d] >= 2 * eps,
+                              prefix,
+                              name,
+                              "a vesicle at least 2 eps = "
+                                + value_text(2 * eps) + " from the boundary ("
+                                + name + " reaches it)");
+              }
+        }
+      // Overlapping membranes, or closer than 2 eps.
+      for (unsigned int i = 0; i < vesicles.size(); ++i)
+        for (unsigned int j = 0; j < i; ++j)
+          {
+            double gap = 1e300;
+            for (const auto &a : outlines[i])
+              for (const auto &b : outlines[j])
+                gap = std::min(gap, a.distance(b));
+            if (shapes[i].signed_distance(vesicles[j].centre) < 0
+                || shapes[j].signed_distance(vesicles[i].centre) < 0)
+              gap = 0;
+            check_input(gap >= 2 * eps,
+                        prefix,
+                        "vesicles " + std::to_string(j + 1) + " and "
+                          + std::to_string(i + 1),
+                        "membranes at least 2 eps = " + value_text(2 * eps)
+                          + (gap == 0 ?
+                               " apart (they overlap)" :
+                               " apart (they are " + value_text(gap) + ")"));
+          }
+      // The interface must be resolved where the vesicles are: eps >= h
+      // (the spec runs eps = 2 h).
+      double h = 0;
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          const auto &breaks = space.knot_vector(d).breakpoints();
+          for (unsigned int k = 0; k + 1 < breaks.size(); ++k)
+            if (breaks[k + 1] >= lo[d] - 3 * eps
+                && breaks[k] <= hi[d] + 3 * eps)
+              h = std::max(h, breaks[k + 1] - breaks[k]);
+        }
+      check_input(eps >= h,
+                  std::string(section) + "/Epsilon",
+                  value_text(eps),
+                  ">= the element size around the vesicles, h = "
+                    + value_text(h) + " (spec 4.9: eps = 2 h)");
+    }
+
+
+    template <int dim>
+    void
+    VesicleHydrodynamicsStudy<dim>::run()
+    {
+      const auto             timer_owner = context.make_timer();
+      TimerOutput           &timer       = *timer_owner;
+      const std::string      prefix      = std::string(section) + "/";
+      const SplineSpace<dim> space = box.make_space<dim>(degree, continuity);
+      bool                   level_fixed;
+      const auto             conditions = boundaries.conditions<dim>(
+        prefix, membrane.reynolds_number, box.periodic, level_fixed);
+      IncompressibleFlowParameters parameters = flow_parameters;
+      parameters.fix_pressure_mean = boundaries.fix_pressure_mean(level_fixed);
+      FlowCoefficients<dim> coefficients;
+      coefficients.reynolds_number           = membrane.reynolds_number;
+      coefficients.inverse_estimate_constant = 6. * std::pow(degree, 4);
+      VesicleHydrodynamics<dim>   model(context.communicator,
+                                      space,
+                                      membrane,
+                                      coefficients,
+                                      conditions,
+                                      parameters,
+                                      vesicles.size(),
+                                      timer);
+      std::vector<InitialVesicle> shapes;
+      std::vector<std::function<double(const Point<dim> &)>> phases;
+      for (const auto &v : vesicles)
+        shapes.emplace_back(
+          v.centre, v.radius, v.reduced_area, v.angle, stretch);
+      for (const auto &shape : shapes)
+        phases.push_back([&shape, this](const Point<dim> &x) {
+          return shape.phase_field(Point<2>(x[0], x[1]), membrane.epsilon);
+        });
+      {
+        TimerOutput::Scope scope(timer, "setup");
+        model.set_initial_state(*parse_formula<dim>(initial_velocity,
+                                                    dim,
+                                                    0,
+                                                    membrane.reynolds_number,
+                                                    prefix
+                                                      + "Initial velocity"),
+                                phases);
+      }
+
+      TimeLoop                  loop(loop_parameters, context, timer);
+      HydrodynamicsMonitor<dim> monitor(model);
+      loop.add_checkpointable("vesicles", model);
+      loop.add_monitor(monitor);
+      SplineFieldWriter<dim>   writer(model.get_flow().dofs(), nullptr);
+      std::vector<std::string> names;
+      for (unsigned int i = 1; i <= vesicles.size(); ++i)
+        names.push_back("phi_" + std::to_string(i));
+      for (unsigned int i = 1; i <= vesicles.size(); ++i)
+        names.push_back("lambda_" + std::to_string(i));
+      add_flow_output_fields(writer, names);
+      if (write_vtu)
+        loop.set_output([&](const unsigned int step) {
+          writer.write(model.get_flow().solution(),
+                       context.output_directory,
+                       "vesicles-" + Utilities::int_to_string(step, 5));
+        });
+      if (loop.restore())
+        context.pcout << "restart from " << loop_parameters.restart_file
+                      << ": step " << loop.step() << ", t = " << model.time()
+                      << ", dt = " << loop.next_dt() << std::endl;
+      context.pcout << "Vesicle hydrodynamics (spec Part H, mixed-free): "
+                    << vesicles.size() << " vesicle(s), degree " << degree
+                    << ", " << space.n_elements() << " elements, "
+                    << model.get_flow().dofs().n_dofs()
+                    << " unknowns, Re = " << membrane.reynolds_number
+                    << ", Ca = " << membrane.capillary_number
+                    << ", eps = " << membrane.epsilon
+                    << ", beta_mu = " << membrane.viscosity_ratio << std::endl;
+      for (unsigned int i = 0; i < shapes.size(); ++i)
+        context.pcout << "  vesicle " << i + 1 << ": centre "
+                      << vesicles[i].centre << ", R_0 " << vesicles[i].radius
+                      << ", gamma_e " << shapes[i].stretch()
+                      << ", reduced area " << shapes[i].actual_reduced_area()
+                      << std::endl;
+      loop.run(model);
+    }
+  } // namespace
+
+
+  StudyDescription
+  vesicle_hydrodynamics_description()
+  {
+    return {
+      "vesicle-hydrodynamics",
+      "N vesicles advected by an RBVMS flow (spec Part H, mixed-free form "
+      "4.13): bending, local inextensibility, interaction, global area and "
+      "volume multipliers, phase-dependent viscosity; shear, extensional and "
+      "channel flows.",
+      [](ParameterHandler &prm) {
+        prm.enter_subsection(section);
+        BoxSpaceParameters::declare(prm, "-2, -2", "2, 2", "32, 32");
+        prm.declare_entry("Degree",
+                          "3",
+                          Patterns::Integer(1, max_spline_degree),
+                          "Spline degree of every field (>= 3: (H25) needs "
+                          "third derivatives of phi_i).");
+        prm.declare_entry("Continuity",
+                          "-1",
+                          Patterns::Integer(-1),
+                          "Continuity at the breakpoints (-1: C^{p-1}; at "
+                          "least 2).");
+        LinearSolverParameters::declare_flow(prm, "direct", "1e-8");
+        prm.declare_entry("Reynolds number",
+                          "5e-3",
+                          Patterns::Double(),
+                          "Re of (H4) (spec 4.9 default).");
+        prm.declare_entry("Capillary number",
+                          "1e4",
+                          Patterns::Double(),
+                          "Bending capillary number Ca: the bending force is "
+                          "scaled by 1 / (Re Ca) (H3).");
+        prm.declare_entry("Interaction number",
+                          "0.5",
+                          Patterns::Double(),
+                          "IN of (H10): the interaction energy is scaled by "
+                          "1 / (Re IN).");
+        prm.declare_entry("Interaction",
+                          "true",
+                          Patterns::Bool(),
+                          "Whether the interaction energy (H10) acts "
+                          "between the vesicles.");
+        prm.declare_entry("Mobility",
+                          "0.1",
+                          Patterns::Double(),
+                          "eta_phi of (H1).");
+        prm.declare_entry("Inextensibility xi",
+                          "1",
+                          Patterns::Double(),
+                          "xi of (H6): regularisation of the tension "
+                          "equation.");
+        prm.declare_entry("Viscosity ratio",
+                          "1",
+                          Patterns::Double(),
+                          "beta_mu = mu_in / mu_out of (H12a).");
+        prm.declare_entry("Epsilon",
+                          "0.125",
+                          Patterns::Double(),
+                          "Interface width eps of (H0) (spec: eps = 2 h).");
+        prm.declare_entry(
+          "Vesicles",
+          "0, 0, 0.863, 0.84, 90",
+          Patterns::Anything(),
+          "Initial vesicles (H23), separated by ';': 'x, y, R_0, chi, "
+          "angle' with centre (x, y), equal-area radius R_0, reduced area "
+          "chi (H22) and the angle of the major axis to the x axis in "
+          "degrees (90: vertical, the spec's default).");
+        prm.declare_entry("Stretch formula",
+                          "exact",
+                          Patterns::Selection("exact|quadratic-mean"),
+                          "gamma_e of (H23) from chi: exact (the ellipse has "
+                          "reduced area chi) or the source's quadratic-mean "
+                          "perimeter (spec 4.11).");
+        prm.declare_entry("Initial velocity",
+                          "0; 0",
+                          Patterns::Anything(),
+                          "u(x, 0), dim formulas separated by ';' (spec "
+                          "4.11: 0, an impulsive start).");
+        prm.declare_entry("Weak penalty constant",
+                          "-1",
+                          Patterns::Double(),
+                          "C_B of tau_B (H21); <= 0: 5 (p + 1).");
+        prm.declare_entry("Weak inflow term",
+                          "true",
+                          Patterns::Bool(),
+                          "Include the inflow term of (H20).");
+        prm.declare_entry("Quadrature points",
+                          "0",
+                          Patterns::Integer(0),
+                          "Gauss points per direction; 0: p + 2.");
+        prm.declare_entry("Write VTU",
+                          "true",
+                          Patterns::Bool(),
+                          "VTU of u, p, vorticity, phi_i, lambda_i at the "
+                          "VTU interval.");
+        FlowBoundaryParameters::declare(prm, n_boundaries);
+        NewtonParameters::declare(prm, "20", "1e-8", "1e-10");
+        prm.enter_subsection("Time stepping");
+        TimeLoop::Parameters::declare(prm, {"fixed", "1e-3", "1e-3", "0.01"});
+        GeneralizedAlphaParameters::declare(prm, "0.5");
+        prm.leave_subsection();
+        prm.leave_subsection();
+      },
+      [](ParameterHandler &prm, RunContext &context) -> std::unique_ptr<Study> {
+        if (context.dimension == 2)
+          return std::make_unique<VesicleHydrodynamicsStudy<2>>(prm, context);
+        return std::make_unique<VesicleHydrodynamicsStudy<3>>(prm, context);
+      }};
+  }
+} // namespace vesicle_iga
