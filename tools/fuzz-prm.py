@@ -15,11 +15,12 @@ mutants that --check accepts (for studies whose unmutated file takes at most
   INVALID       a non-finite number (nan, inf) was accepted
 
 Usage: tools/fuzz-prm.py [--cases N] [--seed S] [--run] [--timeout T]
-                         [--binary build/vesicle-iga] [FILE.prm ...]
+                         [--jobs J] [--binary build/vesicle-iga] [FILE.prm ...]
 Default files: prm/*.prm. Prints a summary and each finding; exit code 1 if
 any CRASH, HANG or INVALID was found.
 """
 import argparse
+import concurrent.futures
 import glob
 import os
 import random
@@ -141,6 +142,8 @@ def main():
     ap.add_argument("--timeout", type=float, default=60)
     ap.add_argument("--cheap", type=float, default=30)
     ap.add_argument("--binary", default="build/vesicle-iga")
+    ap.add_argument("--jobs", type=int, default=1,
+                    help="cases run at once (the outcome does not depend on it)")
     ap.add_argument("files", nargs="*")
     a = ap.parse_args()
     binary = os.path.abspath(a.binary)
@@ -157,29 +160,46 @@ def main():
                                   + "set Output directory = out\n")
             p, t = run([binary, path], a.cheap, work)
             cheap[f] = not t and p.returncode == 0
+    # The cases are drawn first, so that the outcome does not depend on
+    # --jobs; each runs in a folder of its own (a run locks its output
+    # directory).
+    cases = []
     for case in range(a.cases):
         f = rng.choice(files)
         lines, what, non_finite = mutate(sources[f], rng)
-        text = "\n".join(lines)
-        path = os.path.join(work, "case.prm")
+        cases.append((case, f, "\n".join(lines), what, non_finite))
+
+    def run_case(item):
+        case, f, text, what, non_finite = item
+        folder = os.path.join(work, f"case-{case}")
+        os.makedirs(folder)
+        path = os.path.join(folder, "case.prm")
         with open(path, "w", errors="replace") as out:
             out.write(text)
-        p, t = run([binary, "--check", path], a.timeout, work)
+        p, t = run([binary, "--check", path], a.timeout, folder)
         verdict = classify(p, t)
         if verdict == "accepted" and non_finite:
             verdict = "INVALID"
         if verdict == "accepted" and a.run and cheap.get(f):
             with open(path, "w", errors="replace") as out:
                 out.write(few_steps(text) + "set Output directory = out\n")
-            p, t = run([binary, path], a.timeout, work)
+            p, t = run([binary, path], a.timeout, folder)
             verdict = classify(p, t)
             verdict = "ran" if verdict == "accepted" else (
                 "refused at run" if verdict == "refused" else verdict)
-        counts[verdict] = counts.get(verdict, 0) + 1
+        shutil.rmtree(folder, ignore_errors=True)
+        finding = None
         if verdict in ("CRASH", "HANG", "INVALID"):
             tail = (p.stdout + p.stderr).strip().splitlines()[-3:]
-            findings.append(f"{verdict}: {os.path.basename(f)}: {what}: exit "
-                            f"{p.returncode}: " + " | ".join(tail))
+            finding = (f"{verdict}: {os.path.basename(f)}: {what}: exit "
+                       f"{p.returncode}: " + " | ".join(tail))
+        return verdict, finding
+
+    with concurrent.futures.ThreadPoolExecutor(max_workers=a.jobs) as pool:
+        for verdict, finding in pool.map(run_case, cases):
+            counts[verdict] = counts.get(verdict, 0) + 1
+            if finding:
+                findings.append(finding)
     print(f"{a.cases} cases from {len(files)} files (seed {a.seed}): " +
           ", ".join(f"{k} {v}" for k, v in sorted(counts.items())))
     for line in findings:

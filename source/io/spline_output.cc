@@ -8,8 +8,8 @@
 #include <deal.II/numerics/data_out.h>
 
 #include <vesicle_iga/base/fault_injection.h>
+#include <vesicle_iga/fields/spline_dof_handler.h>
 #include <vesicle_iga/io/spline_output.h>
-#include <vesicle_iga/postprocess/field_integrals.h>
 
 #include <algorithm>
 #include <filesystem>

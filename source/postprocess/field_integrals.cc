@@ -7,27 +7,6 @@ namespace vesicle_iga
   using namespace dealii;
 
   template <int dim>
-  void
-  get_element_coefficients(const SplineDofHandler<dim>         &dof_handler,
-                           const TrilinosWrappers::MPI::Vector &ghosted,
-                           const unsigned int                   element,
-                           std::vector<std::vector<double>>    &c)
-  {
-    std::vector<types::global_dof_index> indices;
-    dof_handler.element_dof_indices(element, indices);
-    const unsigned int nc = dof_handler.n_components();
-    const unsigned int m  = indices.size() / nc;
-    c.resize(nc);
-    for (unsigned int k = 0; k < nc; ++k)
-      {
-        c[k].resize(m);
-        for (unsigned int j = 0; j < m; ++j)
-          c[k][j] = ghosted[indices[k * m + j]];
-      }
-  }
-
-
-  template <int dim>
   std::vector<double>
   integrate_field(
     const SplineDofHandler<dim>                      &dof_handler,
@@ -69,12 +48,7 @@ namespace vesicle_iga
     const std::function<void(const SplineCellValues<dim> &,            \
                              const unsigned int,                       \
                              const std::vector<std::vector<double>> &, \
-                             std::vector<double> &)> &);               \
-  template void get_element_coefficients(                              \
-    const SplineDofHandler<dim> &,                                     \
-    const TrilinosWrappers::MPI::Vector &,                             \
-    const unsigned int,                                                \
-    std::vector<std::vector<double>> &);
+                             std::vector<double> &)> &);
   INSTANTIATE(2)
   INSTANTIATE(3)
 #undef INSTANTIATE

@@ -14,7 +14,7 @@
 #include <vesicle_iga/base/input_error.h>
 #include <vesicle_iga/io/spline_output.h>
 #include <vesicle_iga/models/incompressible_flow.h>
-#include <vesicle_iga/parallel/natural_numbering.h>
+#include <vesicle_iga/fields/natural_numbering.h>
 #include <vesicle_iga/postprocess/convergence_study_table.h>
 #include <vesicle_iga/postprocess/field_integrals.h>
 #include <vesicle_iga/postprocess/line_sample.h>

@@ -10,14 +10,18 @@
 #include <deal.II/base/utilities.h>
 
 #include <vesicle_iga/base/input_error.h>
+#include <vesicle_iga/fields/natural_numbering.h>
+#include <vesicle_iga/io/checked_output.h>
 #include <vesicle_iga/io/spline_output.h>
 #include <vesicle_iga/models/vesicle_hydrodynamics.h>
 #include <vesicle_iga/physics/initial_vesicle.h>
+#include <vesicle_iga/postprocess/zero_contour.h>
 #include <vesicle_iga/spline/box_space_parameters.h>
 #include <vesicle_iga/studies/flow_study_parts.h>
 #include <vesicle_iga/studies/study.h>
 
 #include <cmath>
+#include <fstream>
 #include <iomanip>
 #include <sstream>
 
@@ -103,6 +107,53 @@ namespace vesicle_iga
     };
 
 
+    /**
+     * Membrane tension and pressure along every vesicle (spec 4.12):
+     * lambda_i and p sampled on the zero level set of phi_i, with the arc
+     * length s from the rightmost point, counter-clockwise. One CSV with the
+     * columns vesicle, piece (0 = the longest piece of the level set; a
+     * vesicle pinching off has more), s, x, y, lambda, p. A collective call;
+     * rank 0 writes.
+     */
+    template <int dim>
+    void
+    write_membrane_samples(const VesicleHydrodynamics<dim> &model,
+                           const SplineSpace<dim>          &space,
+                           const std::string               &filename)
+    {
+      const auto &dofs    = model.get_flow().dofs();
+      const auto  natural = gather_natural(dofs, model.get_flow().solution());
+      if (Utilities::MPI::this_mpi_process(dofs.get_mesh().get_communicator())
+          != 0)
+        return;
+      if constexpr (dim == 2)
+        {
+          const unsigned int n  = model.n_vesicles();
+          const unsigned int nc = dofs.n_components();
+          std::ofstream      out(filename);
+          out << "vesicle,piece,s,x,y,lambda,p\n" << std::setprecision(10);
+          for (unsigned int i = 0; i < n; ++i)
+            {
+              const auto contours
+                = zero_contours(space, natural, nc, model.phase(i));
+              for (unsigned int k = 0; k < contours.size(); ++k)
+                for (unsigned int j = 0; j < contours[k].points.size(); ++j)
+                  {
+                    const auto &v = contours[k].values[j];
+                    out << i + 1 << ',' << k << ',' << contours[k].arc_length[j]
+                        << ',' << contours[k].points[j][0] << ','
+                        << contours[k].points[j][1] << ','
+                        << v[model.tension(i)] << ',' << v[model.pressure]
+                        << '\n';
+                  }
+            }
+          check_written(out, filename);
+        }
+      else
+        (void)space, (void)filename;
+    }
+
+
     /// One vesicle of the 'Vesicles' list.
     struct VesicleEntry
     {
@@ -134,7 +185,7 @@ namespace vesicle_iga
       std::vector<VesicleEntry>      vesicles;
       InitialVesicle::StretchFormula stretch;
       std::string                    initial_velocity;
-      bool                           write_vtu;
+      bool                           write_vtu, write_tension;
     };
 
 
@@ -175,6 +226,7 @@ namespace vesicle_iga
                                          InitialVesicle::StretchFormula::quadratic_mean;
       initial_velocity               = prm.get("Initial velocity");
       write_vtu                      = prm.get_bool("Write VTU");
+      write_tension                  = prm.get_bool("Write membrane samples");
       const std::string vesicle_text = prm.get("Vesicles");
       boundaries.parse(prm, n_boundaries);
       prm.enter_subsection("Time stepping");
@@ -387,12 +439,18 @@ namespace vesicle_iga
       for (unsigned int i = 1; i <= vesicles.size(); ++i)
         names.push_back("lambda_" + std::to_string(i));
       add_flow_output_fields(writer, names);
-      if (write_vtu)
-        loop.set_output([&](const unsigned int step) {
+      loop.set_output([&](const unsigned int step) {
+        if (write_vtu)
           writer.write(model.get_flow().solution(),
                        context.output_directory,
                        "vesicles-" + Utilities::int_to_string(step, 5));
-        });
+        if (write_tension)
+          write_membrane_samples(model,
+                                 space,
+                                 context.output_directory + "/tension-"
+                                   + Utilities::int_to_string(step, 5)
+                                   + ".csv");
+      });
       if (loop.restore())
         context.pcout << "restart from " << loop_parameters.restart_file
                       << ": step " << loop.step() << ", t = " << model.time()
@@ -511,6 +569,12 @@ namespace vesicle_iga
                           Patterns::Bool(),
                           "VTU of u, p, vorticity, phi_i, lambda_i at the "
                           "VTU interval.");
+        prm.declare_entry("Write membrane samples",
+                          "true",
+                          Patterns::Bool(),
+                          "tension-<step>.csv at the VTU interval: lambda_i "
+                          "and p along the zero level set of every phi_i, "
+                          "with arc length (spec 4.12).");
         FlowBoundaryParameters::declare(prm, n_boundaries);
         NewtonParameters::declare(prm, "20", "1e-8", "1e-10");
         prm.enter_subsection("Time stepping");

@@ -20,7 +20,7 @@
 
 #include <vesicle_iga/kernel/jacobian_check.h>
 #include <vesicle_iga/models/incompressible_flow.h>
-#include <vesicle_iga/parallel/natural_numbering.h>
+#include <vesicle_iga/fields/natural_numbering.h>
 
 #include <cmath>
 #include <fstream>

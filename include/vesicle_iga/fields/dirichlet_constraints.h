@@ -5,7 +5,7 @@
 #include <deal.II/lac/affine_constraints.h>
 
 #include <vesicle_iga/fields/boundary_selection.h>
-#include <vesicle_iga/parallel/spline_dof_handler.h>
+#include <vesicle_iga/fields/spline_dof_handler.h>
 
 #include <functional>
 #include <memory>

@@ -5,7 +5,7 @@
 
 #include <deal.II/dofs/dof_handler.h>
 
-#include <vesicle_iga/parallel/spline_dof_handler.h>
+#include <vesicle_iga/fields/spline_dof_handler.h>
 #include <vesicle_iga/spline/spline_cell_values.h>
 
 #include <functional>

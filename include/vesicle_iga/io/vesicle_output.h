@@ -2,7 +2,7 @@
 
 #include <deal.II/lac/trilinos_vector.h>
 
-#include <vesicle_iga/parallel/spline_dof_handler.h>
+#include <vesicle_iga/fields/spline_dof_handler.h>
 #include <vesicle_iga/physics/electromechanics_material.h>
 
 #include <string>

@@ -8,7 +8,7 @@
 
 #include <vesicle_iga/kernel/system_assembler.h>
 #include <vesicle_iga/parallel/patch_mesh.h>
-#include <vesicle_iga/parallel/spline_dof_handler.h>
+#include <vesicle_iga/fields/spline_dof_handler.h>
 #include <vesicle_iga/solvers/newton.h>
 
 #include <memory>

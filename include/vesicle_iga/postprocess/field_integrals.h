@@ -4,7 +4,7 @@
 
 #include <deal.II/lac/trilinos_vector.h>
 
-#include <vesicle_iga/parallel/spline_dof_handler.h>
+#include <vesicle_iga/fields/spline_dof_handler.h>
 #include <vesicle_iga/spline/spline_cell_values.h>
 
 #include <functional>
@@ -37,11 +37,4 @@ namespace vesicle_iga
                              const std::vector<std::vector<double>> &,
                              std::vector<double> &)> &integrand);
 
-  /// Local coefficients of an element, one vector per component.
-  template <int dim>
-  void
-  get_element_coefficients(const SplineDofHandler<dim> &dof_handler,
-                           const dealii::TrilinosWrappers::MPI::Vector &ghosted,
-                           const unsigned int                           element,
-                           std::vector<std::vector<double>> &coefficients);
 } // namespace vesicle_iga

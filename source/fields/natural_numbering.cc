@@ -1,6 +1,6 @@
 #include <deal.II/base/index_set.h>
 
-#include <vesicle_iga/parallel/natural_numbering.h>
+#include <vesicle_iga/fields/natural_numbering.h>
 
 namespace vesicle_iga
 {

@@ -3,6 +3,7 @@
 #include <deal.II/base/index_set.h>
 
 #include <deal.II/lac/trilinos_sparsity_pattern.h>
+#include <deal.II/lac/trilinos_vector.h>
 
 #include <vesicle_iga/fields/field_layout.h>
 #include <vesicle_iga/parallel/patch_mesh.h>
@@ -130,4 +131,13 @@ namespace vesicle_iga
     dealii::types::global_dof_index total = 0;
     dealii::IndexSet                owned, relevant;
   };
+
+
+  /// Local coefficients of an element, one vector per component.
+  template <int dim>
+  void
+  get_element_coefficients(const SplineDofHandler<dim> &dof_handler,
+                           const dealii::TrilinosWrappers::MPI::Vector &ghosted,
+                           const unsigned int                           element,
+                           std::vector<std::vector<double>> &coefficients);
 } // namespace vesicle_iga

@@ -1,6 +1,6 @@
 #include <deal.II/base/mpi.h>
 
-#include <vesicle_iga/parallel/spline_dof_handler.h>
+#include <vesicle_iga/fields/spline_dof_handler.h>
 
 #include <algorithm>
 
@@ -138,7 +138,38 @@ namespace vesicle_iga
     sp.compress();
   }
 
+  template <int dim>
+  void
+  get_element_coefficients(const SplineDofHandler<dim>         &dof_handler,
+                           const TrilinosWrappers::MPI::Vector &ghosted,
+                           const unsigned int                   element,
+                           std::vector<std::vector<double>>    &c)
+  {
+    std::vector<types::global_dof_index> indices;
+    dof_handler.element_dof_indices(element, indices);
+    const unsigned int nc = dof_handler.n_components();
+    const unsigned int m  = indices.size() / nc;
+    c.resize(nc);
+    for (unsigned int k = 0; k < nc; ++k)
+      {
+        c[k].resize(m);
+        for (unsigned int j = 0; j < m; ++j)
+          c[k][j] = ghosted[indices[k * m + j]];
+      }
+  }
+
+
   template class SplineDofHandler<1>;
   template class SplineDofHandler<2>;
   template class SplineDofHandler<3>;
+
+#define INSTANTIATE(dim)                   \
+  template void get_element_coefficients(  \
+    const SplineDofHandler<dim> &,         \
+    const TrilinosWrappers::MPI::Vector &, \
+    const unsigned int,                    \
+    std::vector<std::vector<double>> &);
+  INSTANTIATE(2)
+  INSTANTIATE(3)
+#undef INSTANTIATE
 } // namespace vesicle_iga

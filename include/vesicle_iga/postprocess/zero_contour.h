@@ -1,0 +1,51 @@
+#pragma once
+
+#include <deal.II/base/point.h>
+
+#include <vesicle_iga/spline/spline_space.h>
+
+#include <string>
+#include <vector>
+
+namespace vesicle_iga
+{
+  /**
+   * A piece of the zero level set of a 2D spline field: its points in
+   * order (counter-clockwise for a closed curve, whose first point is
+   * repeated at the end), their arc length from the first point, and the
+   * values of all components of the field at each point.
+   */
+  struct ZeroContour
+  {
+    std::vector<dealii::Point<2>>    points;
+    std::vector<double>              arc_length;
+    std::vector<std::vector<double>> values;
+    bool                             closed = false;
+
+    double
+    length() const
+    {
+      return arc_length.empty() ? 0. : arc_length.back();
+    }
+  };
+
+
+  /**
+   * The zero level set of component @p component of a 2D spline field
+   * (natural coefficients, @p n_components per basis function, component
+   * fastest): marching squares on a grid of @p samples_per_element cells per
+   * element and direction, every crossing placed on its grid edge by regula
+   * falsi on the spline itself (so the points lie on the spline's zero set to
+   * 1e-12 of the field's range, not on a linear interpolant), the saddle
+   * cells resolved by the cell-centre value, and the segments chained into
+   * curves (closed, or open where the set leaves the domain). Used for the
+   * membrane samples of spec 4.12 (lambda_i and p along phi_i = 0). Longest
+   * piece first.
+   */
+  std::vector<ZeroContour>
+  zero_contours(const SplineSpace<2>      &space,
+                const std::vector<double> &natural,
+                const unsigned int         n_components,
+                const unsigned int         component,
+                const unsigned int         samples_per_element = 4);
+} // namespace vesicle_iga
