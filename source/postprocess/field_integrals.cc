@@ -1,6 +1,9 @@
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/tensor.h>
 
 #include <vesicle_iga/postprocess/field_integrals.h>
+
+#include <cmath>
 
 namespace vesicle_iga
 {
@@ -37,6 +40,39 @@ namespace vesicle_iga
     return sums;
   }
 
+  template <int dim>
+  std::vector<double>
+  scalar_error_norms(const SplineDofHandler<dim>         &dof_handler,
+                     const Function<dim>                 &exact,
+                     const Quadrature<1>                 &quadrature_1d,
+                     const unsigned int                   order,
+                     const TrilinosWrappers::MPI::Vector &solution)
+  {
+    std::vector<double> squares = integrate_field<dim>(
+      dof_handler,
+      nullptr,
+      quadrature_1d,
+      order,
+      solution,
+      order + 1,
+      [&](const SplineCellValues<dim>            &v,
+          const unsigned int                      q,
+          const std::vector<std::vector<double>> &c,
+          std::vector<double>                    &sums) {
+        const Point<dim> &x = v.quadrature_point(q);
+        sums[0] += std::pow(v.value(c[0], q) - exact.value(x), 2) * v.JxW(q);
+        sums[1]
+          += (v.gradient(c[0], q) - exact.gradient(x)).norm_square() * v.JxW(q);
+        if (order >= 2)
+          sums[2] += (v.hessian(c[0], q) - Tensor<2, dim>(exact.hessian(x)))
+                       .norm_square()
+                     * v.JxW(q);
+      });
+    for (double &s : squares)
+      s = std::sqrt(s);
+    return squares;
+  }
+
 #define INSTANTIATE(dim)                                               \
   template std::vector<double> integrate_field(                        \
     const SplineDofHandler<dim> &,                                     \
@@ -48,7 +84,13 @@ namespace vesicle_iga
     const std::function<void(const SplineCellValues<dim> &,            \
                              const unsigned int,                       \
                              const std::vector<std::vector<double>> &, \
-                             std::vector<double> &)> &);
+                             std::vector<double> &)> &);               \
+  template std::vector<double> scalar_error_norms(                     \
+    const SplineDofHandler<dim> &,                                     \
+    const Function<dim> &,                                             \
+    const Quadrature<1> &,                                             \
+    const unsigned int,                                                \
+    const TrilinosWrappers::MPI::Vector &);
   INSTANTIATE(2)
   INSTANTIATE(3)
 #undef INSTANTIATE

@@ -14,9 +14,9 @@
 #include <vesicle_iga/fields/dirichlet_constraints.h>
 #include <vesicle_iga/io/spline_output.h>
 #include <vesicle_iga/models/stationary_problem.h>
-#include <vesicle_iga/postprocess/convergence_study_table.h>
 #include <vesicle_iga/postprocess/field_integrals.h>
 #include <vesicle_iga/studies/convergence_parameters.h>
+#include <vesicle_iga/studies/convergence_study.h>
 #include <vesicle_iga/studies/plate_with_hole_geometry.h>
 #include <vesicle_iga/studies/study.h>
 #include <vesicle_iga/terms/linear_elasticity.h>
@@ -197,81 +197,63 @@ namespace vesicle_iga
                                });
       const Functions::ZeroFunction<2> zero(2);
 
-      const auto            timer_owner = context.make_timer();
-      TimerOutput          &timer       = *timer_owner;
-      ConvergenceStudyTable table(
+      const auto   timer_owner = context.make_timer();
+      TimerOutput &timer       = *timer_owner;
+      run_convergence_study(
+        context,
         2,
-        {"L2", "energy", "stress_L2", "energy_relative", "stress_L2_relative"});
-      for (const unsigned int p : convergence.degrees)
-        for (unsigned int r = 0; r <= convergence.refinements; ++r)
-          {
-            check_input(p >= 2,
-                        "Degrees",
-                        std::to_string(p),
-                        "p >= 2 (the exact geometry is quadratic NURBS)");
-            SplineSpace<2> space = coarse->space().degree_elevated(p - 2);
-
-            space               = space.h_refined(r);
-            const auto geometry = std::make_shared<const NurbsGeometry<2>>(
-              coarse->refined_to(space));
-            StationaryProblem<2> problem(context.communicator,
-                                         space,
-                                         geometry,
-                                         2);
-            add_strong_dirichlet_constraints<2>(problem.dofs(),
-                                                geometry,
-                                                symmetry_y,
-                                                zero,
-                                                {false, true},
-                                                problem.constraints());
-            add_strong_dirichlet_constraints<2>(problem.dofs(),
-                                                geometry,
-                                                symmetry_x,
-                                                zero,
-                                                {true, false},
-                                                problem.constraints());
-            const auto result
-              = problem.solve({&elasticity, &traction},
-                              QGauss<1>(p + 1
-                                        + convergence.extra_quadrature_points),
-                              solver,
-                              &timer);
-
-            const auto errors
-              = this->errors(problem, geometry, p, exact, elasticity);
-            table.add_row(p,
-                          space.n_elements(),
-                          problem.dofs().n_dofs(),
-                          problem.mesh().max_cell_diameter(),
-                          {std::sqrt(errors[4]),
-                           std::sqrt(errors[0]),
-                           std::sqrt(errors[1]),
-                           std::sqrt(errors[0] / errors[2]),
-                           std::sqrt(errors[1] / errors[3])});
-            context.pcout << "p=" << p << " level=" << r
-                          << " elements=" << space.n_elements()
-                          << " unknowns=" << problem.dofs().n_dofs();
-            if (context.print_details)
-              context.pcout << " iterations=" << result.iterations
-                            << " relative-residual=" << result.residual;
-            context.pcout << std::endl;
-
-            if (convergence.write_vtu && r == convergence.refinements)
-              {
-                TimerOutput::Scope t(timer, "output");
-                write_fields(problem, geometry, p, exact, elasticity);
-              }
-          }
-      context.pcout
-        << "Errors: energy = (int (eps-eps_h):C(eps-eps_h))^(1/2) "
-           "(no factor 1/2), stress_L2 = ||sigma-sigma_h||_L2, L2 = "
-           "||u-u_h||_L2 against (P4); "
-           "*_relative: divided by the same norm of the exact "
-           "field."
-        << std::endl;
-      table.report(context.pcout,
-                   context.communicator,
-                   context.output_directory);
+        convergence,
+        {"L2", "energy", "stress_L2", "energy_relative", "stress_L2_relative"},
+        [&](const unsigned int p, const unsigned int r) {
+          check_input(p >= 2,
+                      "Degrees",
+                      std::to_string(p),
+                      "p >= 2 (the exact geometry is quadratic NURBS)");
+          const SplineSpace<2> space
+            = coarse->space().degree_elevated(p - 2).h_refined(r);
+          const auto geometry = std::make_shared<const NurbsGeometry<2>>(
+            coarse->refined_to(space));
+          StationaryProblem<2> problem(context.communicator,
+                                       space,
+                                       geometry,
+                                       2);
+          add_strong_dirichlet_constraints<2>(problem.dofs(),
+                                              geometry,
+                                              symmetry_y,
+                                              zero,
+                                              {false, true},
+                                              problem.constraints());
+          add_strong_dirichlet_constraints<2>(problem.dofs(),
+                                              geometry,
+                                              symmetry_x,
+                                              zero,
+                                              {true, false},
+                                              problem.constraints());
+          const auto result
+            = problem.solve({&elasticity, &traction},
+                            QGauss<1>(p + 1
+                                      + convergence.extra_quadrature_points),
+                            solver,
+                            &timer);
+          const auto e = this->errors(problem, geometry, p, exact, elasticity);
+          if (convergence.write_vtu && r == convergence.refinements)
+            {
+              TimerOutput::Scope t(timer, "output");
+              write_fields(problem, geometry, p, exact, elasticity);
+            }
+          return ConvergenceLevel{space.n_elements(),
+                                  problem.dofs().n_dofs(),
+                                  problem.mesh().max_cell_diameter(),
+                                  {std::sqrt(e[4]),
+                                   std::sqrt(e[0]),
+                                   std::sqrt(e[1]),
+                                   std::sqrt(e[0] / e[2]),
+                                   std::sqrt(e[1] / e[3])},
+                                  result};
+        },
+        "Errors: energy = (int (eps-eps_h):C(eps-eps_h))^(1/2) (no factor 1/2), "
+        "stress_L2 = ||sigma-sigma_h||_L2, L2 = ||u-u_h||_L2 against (P4); "
+        "*_relative: divided by the same norm of the exact field.");
     }
 
 

@@ -11,11 +11,11 @@
 #include <vesicle_iga/fields/dirichlet_constraints.h>
 #include <vesicle_iga/io/spline_output.h>
 #include <vesicle_iga/models/stationary_problem.h>
-#include <vesicle_iga/postprocess/convergence_study_table.h>
 #include <vesicle_iga/postprocess/field_integrals.h>
 #include <vesicle_iga/postprocess/manufactured_solution.h>
 #include <vesicle_iga/spline/box_space_parameters.h>
 #include <vesicle_iga/studies/convergence_parameters.h>
+#include <vesicle_iga/studies/convergence_study.h>
 #include <vesicle_iga/studies/study.h>
 #include <vesicle_iga/terms/laplace.h>
 
@@ -91,94 +91,70 @@ namespace vesicle_iga
                                           "Strong Dirichlet boundaries");
       const BoundarySelection<dim> nitsche(nitsche_text, "Nitsche boundaries");
 
-      const auto            timer_owner = context.make_timer();
-      TimerOutput          &timer       = *timer_owner;
-      ConvergenceStudyTable table(dim, {"L2", "H1"});
-      for (const unsigned int p : convergence.degrees)
-        for (unsigned int r = 0; r <= convergence.refinements; ++r)
-          {
-            const SplineSpace<dim> space
-              = box.make_space<dim>(p, convergence.continuity).h_refined(r);
-            StationaryProblem<dim> problem(context.communicator,
-                                           space,
-                                           nullptr,
-                                           1);
-            add_strong_dirichlet_constraints<dim>(problem.dofs(),
-                                                  nullptr,
-                                                  strong,
-                                                  exact,
-                                                  {true},
-                                                  problem.constraints());
-            const double penalty
-              = nitsche_constant > 0 ? nitsche_constant : 5. * (p + 1);
-            LaplaceTerm<dim>          laplace(0, f);
-            NitscheDirichletTerm<dim> weak(0, nitsche, exact, penalty);
-            NeumannTerm<dim>          neumann(
-              0,
-              [&](const unsigned int face, const Point<dim> &x) {
-                return !strong.contains(face, x) && !nitsche.contains(face, x);
-              },
-              [&](const Point<dim> &x) { return exact.gradient(x); });
-            const auto result
-              = problem.solve({&laplace, &weak, &neumann},
-                              QGauss<1>(p + 1
-                                        + convergence.extra_quadrature_points),
-                              solver,
-                              &timer);
-
-            const auto errors = integrate_field<dim>(
+      const auto   timer_owner = context.make_timer();
+      TimerOutput &timer       = *timer_owner;
+      run_convergence_study(
+        context,
+        dim,
+        convergence,
+        {"L2", "H1"},
+        [&](const unsigned int p, const unsigned int r) {
+          const SplineSpace<dim> space
+            = box.make_space<dim>(p, convergence.continuity).h_refined(r);
+          StationaryProblem<dim> problem(context.communicator,
+                                         space,
+                                         nullptr,
+                                         1);
+          add_strong_dirichlet_constraints<dim>(problem.dofs(),
+                                                nullptr,
+                                                strong,
+                                                exact,
+                                                {true},
+                                                problem.constraints());
+          const double penalty
+            = nitsche_constant > 0 ? nitsche_constant : 5. * (p + 1);
+          LaplaceTerm<dim>          laplace(0, f);
+          NitscheDirichletTerm<dim> weak(0, nitsche, exact, penalty);
+          NeumannTerm<dim>          neumann(
+            0,
+            [&](const unsigned int face, const Point<dim> &x) {
+              return !strong.contains(face, x) && !nitsche.contains(face, x);
+            },
+            [&](const Point<dim> &x) { return exact.gradient(x); });
+          const auto result
+            = problem.solve({&laplace, &weak, &neumann},
+                            QGauss<1>(p + 1
+                                      + convergence.extra_quadrature_points),
+                            solver,
+                            &timer);
+          if (convergence.write_vtu && r == convergence.refinements)
+            {
+              TimerOutput::Scope     t(timer, "output");
+              SplineFieldWriter<dim> writer(problem.dofs(), nullptr);
+              writer.add_components({"u"});
+              writer.add_quantity(
+                "error",
+                [&](const SplineCellValues<dim>            &v,
+                    const unsigned int                      q,
+                    const std::vector<std::vector<double>> &c) {
+                  return v.value(c[0], q) - exact.value(v.quadrature_point(q));
+                });
+              writer.write(problem.solution(),
+                           context.output_directory,
+                           "solution-p" + std::to_string(p));
+            }
+          return ConvergenceLevel{
+            space.n_elements(),
+            problem.dofs().n_dofs(),
+            problem.mesh().max_cell_diameter(),
+            scalar_error_norms<dim>(
               problem.dofs(),
-              nullptr,
+              exact,
               QGauss<1>(p + 3 + convergence.extra_quadrature_points),
               1,
-              problem.solution(),
-              2,
-              [&](const SplineCellValues<dim>            &v,
-                  const unsigned int                      q,
-                  const std::vector<std::vector<double>> &c,
-                  std::vector<double>                    &sums) {
-                const Point<dim> &x = v.quadrature_point(q);
-                sums[0]
-                  += std::pow(v.value(c[0], q) - exact.value(x), 2) * v.JxW(q);
-                sums[1]
-                  += (v.gradient(c[0], q) - exact.gradient(x)).norm_square()
-                     * v.JxW(q);
-              });
-            const double h = problem.mesh().max_cell_diameter();
-            table.add_row(p,
-                          space.n_elements(),
-                          problem.dofs().n_dofs(),
-                          h,
-                          {std::sqrt(errors[0]), std::sqrt(errors[1])});
-            context.pcout << "p=" << p << " level=" << r
-                          << " elements=" << space.n_elements()
-                          << " unknowns=" << problem.dofs().n_dofs();
-            if (context.print_details)
-              context.pcout << " CG-iterations=" << result.iterations
-                            << " relative-residual=" << result.residual;
-            context.pcout << std::endl;
-
-            if (convergence.write_vtu && r == convergence.refinements)
-              {
-                TimerOutput::Scope     t(timer, "output");
-                SplineFieldWriter<dim> writer(problem.dofs(), nullptr);
-                writer.add_components({"u"});
-                writer.add_quantity(
-                  "error",
-                  [&](const SplineCellValues<dim>            &v,
-                      const unsigned int                      q,
-                      const std::vector<std::vector<double>> &c) {
-                    return v.value(c[0], q)
-                           - exact.value(v.quadrature_point(q));
-                  });
-                writer.write(problem.solution(),
-                             context.output_directory,
-                             "solution-p" + std::to_string(p));
-              }
-          }
-      table.report(context.pcout,
-                   context.communicator,
-                   context.output_directory);
+              problem.solution()),
+            result};
+        });
     }
   } // namespace
 

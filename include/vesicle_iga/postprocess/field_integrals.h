@@ -1,5 +1,6 @@
 #pragma once
 
+#include <deal.II/base/function.h>
 #include <deal.II/base/quadrature.h>
 
 #include <deal.II/lac/trilinos_vector.h>
@@ -37,4 +38,17 @@ namespace vesicle_iga
                              const std::vector<std::vector<double>> &,
                              std::vector<double> &)> &integrand);
 
+  /**
+   * Error norms of a scalar spline field against an exact solution:
+   * ||u - u_h||_L2, |u - u_h|_H1 and, for @p order 2, |u - u_h|_H2 (the
+   * L2 norms of the differences of the gradients and Hessians), with the
+   * exact derivatives from @p exact (value, gradient, hessian).
+   */
+  template <int dim>
+  std::vector<double>
+  scalar_error_norms(const SplineDofHandler<dim>                 &dof_handler,
+                     const dealii::Function<dim>                 &exact,
+                     const dealii::Quadrature<1>                 &quadrature_1d,
+                     const unsigned int                           order,
+                     const dealii::TrilinosWrappers::MPI::Vector &solution);
 } // namespace vesicle_iga
