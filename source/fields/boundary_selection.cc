@@ -3,6 +3,8 @@
 #include <vesicle_iga/base/input_error.h>
 #include <vesicle_iga/fields/boundary_selection.h>
 
+#include <cmath>
+
 namespace vesicle_iga
 {
   using namespace dealii;
@@ -70,15 +72,28 @@ namespace vesicle_iga
                         allowed);
             Range r;
             r.coordinate = fields[0][0] - 'x';
-            try
-              {
-                r.min = std::stod(fields[1]);
-                r.max = std::stod(fields[2]);
-              }
-            catch (...)
-              {
-                throw InputError(parameter, text, allowed);
-              }
+            // Whole, finite numbers only: "6x" or "inf" is refused, not
+            // read as 6 or as the end of the domain.
+            const auto number = [&](const std::string &field) {
+              std::size_t used = 0;
+              double      v    = 0;
+              try
+                {
+                  v = std::stod(field, &used);
+                }
+              catch (...)
+                {
+                  used = 0;
+                }
+              check_input(used == field.size() && std::isfinite(v),
+                          parameter,
+                          text,
+                          "ranges {coordinate:min:max} with finite numbers "
+                          "min < max");
+              return v;
+            };
+            r.min = number(fields[1]);
+            r.max = number(fields[2]);
             check_input(r.min < r.max,
                         parameter,
                         text,

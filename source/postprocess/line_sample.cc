@@ -82,6 +82,15 @@ namespace vesicle_iga
                 prefix + "Coordinate",
                 coordinate_name,
                 "a coordinate of the " + std::to_string(dim) + "D domain");
+    // The samples (and the reference data) are written against this
+    // coordinate, so it must change along the line.
+    check_input(start[coordinate] != end[coordinate],
+                prefix + "End",
+                prm.get("End"),
+                "a point whose " + coordinate_name
+                  + " differs from that of Start (the samples are written "
+                    "against "
+                  + coordinate_name + ")");
     field_name = prm.get("Field");
     component  = std::find(field_names.begin(), field_names.end(), field_name)
                 - field_names.begin();

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <stdexcept>
 
 namespace vesicle_iga
 {
@@ -194,6 +195,9 @@ namespace vesicle_iga
   unsigned int
   KnotVector::find_element(const double x) const
   {
+    if (std::isnan(x))
+      throw std::invalid_argument(
+        "KnotVector::find_element: the coordinate is not a number");
     if (x <= z.front())
       return 0;
     if (x >= z.back())

@@ -12,9 +12,9 @@
 #include <deal.II/base/utilities.h>
 
 #include <vesicle_iga/base/input_error.h>
+#include <vesicle_iga/fields/natural_numbering.h>
 #include <vesicle_iga/io/spline_output.h>
 #include <vesicle_iga/models/incompressible_flow.h>
-#include <vesicle_iga/fields/natural_numbering.h>
 #include <vesicle_iga/postprocess/convergence_study_table.h>
 #include <vesicle_iga/postprocess/field_integrals.h>
 #include <vesicle_iga/postprocess/line_sample.h>
@@ -194,7 +194,27 @@ namespace vesicle_iga
           LineSample sample;
           sample.parse(prm, prefix + name + "/", field_names, dim);
           if (!sample.name.empty())
-            line_samples.push_back(sample);
+            {
+              // Outside the box the spline would be extrapolated.
+              const auto corner = [](const std::vector<double> &x) {
+                std::string text;
+                for (const double v : x)
+                  text += (text.empty() ? "" : ", ") + value_text(v);
+                return text;
+              };
+              for (const auto &[entry, point] :
+                   {std::make_pair("Start", &sample.start),
+                    std::make_pair("End", &sample.end)})
+                for (unsigned int d = 0; d < dim; ++d)
+                  check_input((*point)[d] >= box.lower[d]
+                                && (*point)[d] <= box.upper[d],
+                              prefix + name + "/" + entry,
+                              prm.get(entry),
+                              "a point of the domain (lower corner "
+                                + corner(box.lower) + ", upper corner "
+                                + corner(box.upper) + ")");
+              line_samples.push_back(sample);
+            }
           prm.leave_subsection();
         }
       prm.enter_subsection("Time stepping");

@@ -61,6 +61,23 @@ main(int argc, char *argv[])
         "set Study = navier-stokes\nsubsection Navier-Stokes\n"
         "subsection Line sample 1\nset Name = c\nset Start = 0.5, 0\n"
         "set End = 0.5, 1\nset Reference = ghia-1983\nend\nend\n"},
+       // Found by tools/fuzz-prm.py (doc/reliability.md): a line sample
+       // along which its abscissa does not change (the reference data
+       // were interpolated at 0 / 0: a segmentation fault), one that leaves
+       // the domain, and a boundary range with a non-finite end.
+       {"line sample with constant abscissa",
+        "set Study = navier-stokes\nsubsection Navier-Stokes\n"
+        "subsection Line sample 1\nset Name = c\nset Start = 0.5, 0\n"
+        "set End = 1, 0\nset Coordinate = y\n"
+        "set Reference = ghia-1982-re100-u\nend\nend\n"},
+       {"line sample outside the domain",
+        "set Study = navier-stokes\nsubsection Navier-Stokes\n"
+        "subsection Line sample 1\nset Name = c\nset Start = 0.5, 0\n"
+        "set End = 0.5, 2\nend\nend\n"},
+       {"boundary range with an infinite end",
+        "set Study = navier-stokes\nsubsection Navier-Stokes\n"
+        "subsection Boundary 1\nset Type = strong\n"
+        "set Where = y-min{x:0:inf}\nend\nend\n"},
        {"vesicles in 3D",
         "set Study = vesicle-hydrodynamics\nset Dimension = 3\n"},
        {"vesicles on quadratic splines",
