@@ -1,6 +1,6 @@
 #include <vesicle_iga/base/input_error.h>
-#include <vesicle_iga/io/field_checkpoint.h>
 #include <vesicle_iga/fields/natural_numbering.h>
+#include <vesicle_iga/io/field_checkpoint.h>
 
 #include <cmath>
 

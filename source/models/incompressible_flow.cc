@@ -4,8 +4,8 @@
 
 #include <vesicle_iga/base/input_error.h>
 #include <vesicle_iga/fields/dirichlet_constraints.h>
-#include <vesicle_iga/models/incompressible_flow.h>
 #include <vesicle_iga/fields/natural_numbering.h>
+#include <vesicle_iga/models/incompressible_flow.h>
 #include <vesicle_iga/solvers/flow_block_preconditioner.h>
 #include <vesicle_iga/solvers/spline_multigrid.h>
 

@@ -15,9 +15,9 @@
 
 #include <vesicle_iga/base/input_error.h>
 #include <vesicle_iga/fields/dirichlet_constraints.h>
+#include <vesicle_iga/fields/natural_numbering.h>
 #include <vesicle_iga/io/vesicle_output.h>
 #include <vesicle_iga/models/phase_field_flow.h>
-#include <vesicle_iga/fields/natural_numbering.h>
 #include <vesicle_iga/physics/vesicle_shape.h>
 #include <vesicle_iga/postprocess/level_set_extent.h>
 #include <vesicle_iga/spline/box_space_parameters.h>

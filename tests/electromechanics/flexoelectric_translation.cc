@@ -39,9 +39,9 @@
 
 #include <deal.II/base/quadrature_lib.h>
 
+#include <vesicle_iga/fields/natural_numbering.h>
 #include <vesicle_iga/kernel/system_assembler.h>
 #include <vesicle_iga/models/electric_potential.h>
-#include <vesicle_iga/fields/natural_numbering.h>
 #include <vesicle_iga/parallel/patch_mesh.h>
 #include <vesicle_iga/physics/vesicle_shape.h>
 #include <vesicle_iga/terms/bending_energy.h>

@@ -18,9 +18,9 @@
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/quadrature_lib.h>
 
+#include <vesicle_iga/fields/natural_numbering.h>
 #include <vesicle_iga/kernel/jacobian_check.h>
 #include <vesicle_iga/models/incompressible_flow.h>
-#include <vesicle_iga/fields/natural_numbering.h>
 
 #include <cmath>
 #include <fstream>

@@ -26,8 +26,8 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_sparsity_pattern.h>
 
-#include <vesicle_iga/kernel/jacobian_check.h>
 #include <vesicle_iga/fields/natural_numbering.h>
+#include <vesicle_iga/kernel/jacobian_check.h>
 #include <vesicle_iga/physics/electromechanics_material.h>
 #include <vesicle_iga/terms/bending_energy.h>
 #include <vesicle_iga/terms/biharmonic.h>

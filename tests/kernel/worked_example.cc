@@ -6,8 +6,8 @@
 
 #include <deal.II/base/quadrature_lib.h>
 
-#include <vesicle_iga/kernel/jacobian_check.h>
 #include <vesicle_iga/fields/natural_numbering.h>
+#include <vesicle_iga/kernel/jacobian_check.h>
 
 #include <cmath>
 #include <fstream>

@@ -13,10 +13,10 @@
 //      error at eps / R = 0.8. This is why eps must shrink with h.
 #include <deal.II/base/quadrature_lib.h>
 
-#include <vesicle_iga/kernel/system_assembler.h>
 #include <vesicle_iga/fields/natural_numbering.h>
-#include <vesicle_iga/parallel/patch_mesh.h>
 #include <vesicle_iga/fields/spline_dof_handler.h>
+#include <vesicle_iga/kernel/system_assembler.h>
+#include <vesicle_iga/parallel/patch_mesh.h>
 #include <vesicle_iga/physics/vesicle_shape.h>
 #include <vesicle_iga/terms/bending_energy.h>
 

@@ -2,8 +2,8 @@
 
 #include <deal.II/lac/trilinos_vector.h>
 
-#include <vesicle_iga/io/checkpoint.h>
 #include <vesicle_iga/fields/spline_dof_handler.h>
+#include <vesicle_iga/io/checkpoint.h>
 
 #include <string>
 

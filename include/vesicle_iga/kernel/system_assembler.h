@@ -6,8 +6,8 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
-#include <vesicle_iga/kernel/term.h>
 #include <vesicle_iga/fields/spline_dof_handler.h>
+#include <vesicle_iga/kernel/term.h>
 #include <vesicle_iga/spline/nurbs_geometry.h>
 
 #include <memory>

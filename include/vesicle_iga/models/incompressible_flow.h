@@ -8,10 +8,10 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <vesicle_iga/fields/boundary_selection.h>
+#include <vesicle_iga/fields/spline_dof_handler.h>
 #include <vesicle_iga/io/checkpoint.h>
 #include <vesicle_iga/kernel/system_assembler.h>
 #include <vesicle_iga/parallel/patch_mesh.h>
-#include <vesicle_iga/fields/spline_dof_handler.h>
 #include <vesicle_iga/physics/flow_coefficients.h>
 #include <vesicle_iga/solvers/newton.h>
 #include <vesicle_iga/terms/navier_stokes_rbvms.h>

@@ -6,9 +6,9 @@
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <vesicle_iga/fields/spline_dof_handler.h>
 #include <vesicle_iga/kernel/system_assembler.h>
 #include <vesicle_iga/parallel/patch_mesh.h>
-#include <vesicle_iga/fields/spline_dof_handler.h>
 #include <vesicle_iga/solvers/newton.h>
 
 #include <memory>
