@@ -13,18 +13,6 @@
 namespace vesicle_iga
 {
 
-  /**
-   * Krylov method and preconditioner for a symmetric positive definite
-   * spline system (subsection "Linear solver" of a study):
-   *  - cg-amg: CG preconditioned by one V-cycle of Trilinos ML AMG
-   *    (higher-order smoothing, as the spline couplings are wide);
-   *  - direct: Amesos KLU (gathers the matrix: small problems and fourth
-   *    order operators, on which AMG is not robust);
-   *  - gmres-mg, cg-mg: one V-cycle of the geometric spline multigrid
-   *    (SplineMultigrid), robust for the fourth-order operators of Part E;
-   *  - fgmres-block: flexible GMRES with the velocity-pressure block
-   *    preconditioner of the flow solver (FlowBlockPreconditioner).
-   */
   /// Settings of the velocity-pressure block preconditioner
   /// (FlowBlockPreconditioner; subsection "Linear solver/Block
   /// preconditioner" of the flow study).
@@ -52,6 +40,19 @@ namespace vesicle_iga
     parse(dealii::ParameterHandler &prm);
   };
 
+  /**
+   * Krylov method and preconditioner of a spline system (subsection
+   * "Linear solver" of a study):
+   *  - cg-amg: CG preconditioned by one V-cycle of Trilinos ML AMG
+   *    (higher-order smoothing, as the spline couplings are wide);
+   *  - direct: MUMPS sparse LU through Amesos (small problems, fourth
+   *    order operators on which AMG is not robust, the coupled vesicle
+   *    system);
+   *  - gmres-mg, cg-mg: one V-cycle of the geometric spline multigrid
+   *    (SplineMultigrid), robust for the fourth-order operators of Part E;
+   *  - fgmres-block: flexible GMRES with the velocity-pressure block
+   *    preconditioner of the flow solver (FlowBlockPreconditioner).
+   */
   struct LinearSolverParameters
   {
     std::string                       method         = "cg-amg";
