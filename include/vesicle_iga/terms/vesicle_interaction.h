@@ -35,19 +35,21 @@ namespace vesicle_iga
     T
     potential(const T &phi_i, const T &phi_j) const
     {
-      using namespace membrane;
       return k
-             * (interaction_b_derivative(phi_i, eps) * interaction_w(phi_j)
-                + interaction_w_derivative(phi_i) * interaction_b(phi_j, eps));
+             * (membrane::interaction_b_derivative(phi_i, eps)
+                  * membrane::interaction_w(phi_j)
+                + membrane::interaction_w_derivative(phi_i)
+                    * membrane::interaction_b(phi_j, eps));
     }
     /// The integrand of (H10).
     double
     energy_density(const double phi_i, const double phi_j) const
     {
-      using namespace membrane;
       return k
-             * (interaction_b(phi_i, eps) * interaction_w(phi_j)
-                + interaction_b(phi_j, eps) * interaction_w(phi_i));
+             * (membrane::interaction_b(phi_i, eps)
+                  * membrane::interaction_w(phi_j)
+                + membrane::interaction_b(phi_j, eps)
+                    * membrane::interaction_w(phi_i));
     }
     template <typename T>
     void
