@@ -2,6 +2,8 @@
 
 #include <vesicle_iga/fields/field_layout.h>
 
+#include <stdexcept>
+
 namespace vesicle_iga
 {
   using namespace dealii;
@@ -63,8 +65,10 @@ namespace vesicle_iga
     for (unsigned int f = 0; f < fields.size(); ++f)
       if (fields[f].name == name)
         return f;
-    AssertThrow(false, dealii::ExcMessage("No field named " + name + "."));
-    return 0;
+    // A model asked for a field it did not add: a programming error, not
+    // bad input, reported with the name it looked for.
+    throw std::invalid_argument("FieldLayout::find: no field named '" + name
+                                + "'");
   }
 
   template class FieldLayout<1>;
