@@ -172,15 +172,7 @@ namespace vesicle_iga
                                               sparsity,
                                               &timer);
     if (parameters.solver.method == "fgmres-block")
-      {
-        // The block preconditioner knows velocity and pressure only.
-        check_input(!coupling,
-                    "Linear solver/Method",
-                    parameters.solver.method,
-                    "direct, gmres-ilu or gmres-amg when fields beyond "
-                    "velocity and pressure are coupled to the flow");
-        setup_block_preconditioner();
-      }
+      setup_block_preconditioner();
     stepper = std::make_unique<GeneralizedAlphaStepper<dim>>(
       assembler,
       *linear,
@@ -230,7 +222,8 @@ namespace vesicle_iga
   void
   IncompressibleFlow<dim>::setup_block_preconditioner()
   {
-    const auto &block   = parameters.solver.block;
+    const auto        &block = parameters.solver.block;
+    const unsigned int nc    = dof_handler.n_components();
     auto preconditioner = std::make_unique<FlowBlockPreconditioner>(dim, block);
     if (block.velocity_preconditioner == "spline-multigrid")
       {
@@ -239,8 +232,8 @@ namespace vesicle_iga
         // conditions keep their unknowns from step to step).
         IndexSet velocity_owned(space.n_basis() * dim);
         for (const auto g : dof_handler.locally_owned_dofs())
-          if (g % (dim + 1) < dim)
-            velocity_owned.add_index(g / (dim + 1) * dim + g % (dim + 1));
+          if (g % nc < dim)
+            velocity_owned.add_index(g / nc * dim + g % nc);
         velocity_owned.compress();
         SplineMultigridParameters mg;
         mg.smoother    = block.velocity_smoother;
@@ -250,36 +243,57 @@ namespace vesicle_iga
           std::make_unique<SplineMultigrid<dim>>(
             dof_handler,
             dim,
-            [this](const unsigned int i, const unsigned int c) {
-              return dof_handler.dof_index(i, 0) / (dim + 1) * dim + c;
+            [this, nc](const unsigned int i, const unsigned int c) {
+              return dof_handler.dof_index(i, 0) / nc * dim + c;
             },
             velocity_owned,
-            [this](const types::global_dof_index g) {
-              return increments.is_constrained(g / dim * (dim + 1) + g % dim);
+            [this, nc](const types::global_dof_index g) {
+              return increments.is_constrained(g / dim * nc + g % dim);
             },
             mg));
       }
-    FlowBlockPreconditioner *blocks = preconditioner.get();
-    std::function<void()>    lumped_operators;
-    if (block.schur_approximation == "cahouet-chabard")
+    // With coupled fields the coupling wraps the flow blocks.
+    std::unique_ptr<LumpedOperatorPreconditioner> whole;
+    if (coupling)
+      {
+        whole = coupling->block_preconditioner(std::move(preconditioner),
+                                               dof_handler,
+                                               increments,
+                                               block);
+        check_input(whole != nullptr,
+                    "Linear solver/Method",
+                    parameters.solver.method,
+                    "direct, gmres-ilu or gmres-amg: the fields coupled to "
+                    "the flow have no block preconditioner");
+      }
+    else
+      whole = std::move(preconditioner);
+    LumpedOperatorPreconditioner *target = whole.get();
+    std::function<void()>         lumped_operators;
+    if (block.schur_approximation == "cahouet-chabard" || coupling)
       {
         schur_assembler
           = std::make_unique<SystemAssembler<dim>>(dof_handler,
                                                    assembler.get_quadrature());
         schur_assembler->add_term(lumped_schur);
+        if (coupling)
+          for (Term<dim> *term : coupling->lumped_operator_terms())
+            schur_assembler->add_term(*term);
         // At the state of the Jacobian just assembled.
-        lumped_operators = [this, blocks]() {
+        lumped_operators = [this, target]() {
           const AssemblyState &state = stepper->stage();
           lumped_schur.set_factors(state.rate_factor[0],
                                    state.value_factor[dim]);
+          if (coupling)
+            coupling->prepare_lumped_operators(state);
           TrilinosWrappers::MPI::Vector lumped(dof_handler.locally_owned_dofs(),
                                                comm);
           const AffineConstraints<double> none;
           schur_assembler->assemble(state, none, &lumped, nullptr);
-          blocks->set_lumped_operators(lumped);
+          target->set_lumped_operators(lumped);
         };
       }
-    linear->set_preconditioner(std::move(preconditioner),
+    linear->set_preconditioner(std::move(whole),
                                JacobianSolver::Reuse::every_matrix,
                                lumped_operators);
   }

@@ -7,6 +7,7 @@
 #include <vesicle_iga/base/input_error.h>
 #include <vesicle_iga/fields/dirichlet_constraints.h>
 #include <vesicle_iga/models/vesicle_hydrodynamics.h>
+#include <vesicle_iga/solvers/vesicle_block_preconditioner.h>
 
 #include <cmath>
 
@@ -310,6 +311,8 @@ namespace vesicle_iga
         inextensibility.push_back(std::make_unique<LocalInextensibility<dim>>(
           LocalInextensibilityFormula<dim>(
             velocity, phase(i), tension(i), membrane)));
+        tension_schur.push_back(std::make_unique<TensionLumpedSchur<dim>>(
+          velocity, phase(i), tension(i), flow_coefficients, membrane));
         for (unsigned int j = 0; j < i && membrane.interaction; ++j)
           {
             pairs.emplace_back(j, i);
@@ -360,6 +363,76 @@ namespace vesicle_iga
     if (viscosity)
       list.push_back(viscosity.get());
     return list;
+  }
+
+
+  template <int dim>
+  std::unique_ptr<LumpedOperatorPreconditioner>
+  VesicleHydrodynamics<dim>::block_preconditioner(
+    std::unique_ptr<FlowBlockPreconditioner> flow,
+    const SplineDofHandler<dim>             &dofs,
+    const AffineConstraints<double>         &increments,
+    const FlowBlockPreconditionerParameters &parameters)
+  {
+    const unsigned int                                 nc = dofs.n_components();
+    std::vector<std::unique_ptr<MatrixPreconditioner>> phase_blocks(n);
+    if (parameters.phase_field_preconditioner == "spline-multigrid")
+      for (unsigned int i = 0; i < n; ++i)
+        {
+          // Row of basis b in the phase-field block: new_index(b); the
+          // phase fields have natural conditions only.
+          IndexSet owned(dofs.get_space().n_basis());
+          for (const auto g : dofs.locally_owned_dofs())
+            if (g % nc == phase(i))
+              owned.add_index(g / nc);
+          owned.compress();
+          SplineMultigridParameters mg;
+          mg.smoother = parameters.phase_field_smoother;
+          mg.sweeps   = parameters.phase_field_sweeps;
+          if (parameters.phase_field_coarse_size > 0)
+            mg.coarse_size = parameters.phase_field_coarse_size;
+          phase_blocks[i] = std::make_unique<SplineMultigrid<dim>>(
+            dofs,
+            1,
+            [&dofs, nc](const unsigned int b, const unsigned int) {
+              return dofs.dof_index(b, 0) / nc;
+            },
+            owned,
+            [](const types::global_dof_index) { return false; },
+            mg);
+        }
+    return std::make_unique<VesicleBlockPreconditioner>(
+      dim,
+      n,
+      dofs.locally_owned_dofs(),
+      dofs.get_mesh().get_communicator(),
+      std::move(flow),
+      std::move(phase_blocks),
+      [&increments](const types::global_dof_index g) {
+        return increments.is_constrained(g);
+      },
+      parameters);
+  }
+
+
+  template <int dim>
+  std::vector<Term<dim> *>
+  VesicleHydrodynamics<dim>::lumped_operator_terms()
+  {
+    std::vector<Term<dim> *> list;
+    for (auto &t : tension_schur)
+      list.push_back(t.get());
+    return list;
+  }
+
+
+  template <int dim>
+  void
+  VesicleHydrodynamics<dim>::prepare_lumped_operators(
+    const AssemblyState &state)
+  {
+    for (unsigned int i = 0; i < n; ++i)
+      tension_schur[i]->set_factor(state.value_factor[tension(i)]);
   }
 
 

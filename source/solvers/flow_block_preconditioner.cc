@@ -1,91 +1,15 @@
 // Block preconditioner of the RBVMS velocity-pressure tangent. See the
 // header and doc/flow.md ("Linear solver").
 
-#include <deal.II/lac/trilinos_index_access.h>
-#include <deal.II/lac/trilinos_sparsity_pattern.h>
-
 #include <vesicle_iga/solvers/flow_block_preconditioner.h>
+#include <vesicle_iga/solvers/interleaved_blocks.h>
 
-#include <Epetra_CrsMatrix.h>
-#include <algorithm>
 #include <sstream>
 #include <utility>
 
 namespace vesicle_iga
 {
   using namespace dealii;
-
-  namespace
-  {
-    using Row = std::vector<std::pair<types::global_dof_index, double>>;
-
-    /// Call @p f(column, value) for the entries of the locally owned row
-    /// @p row (global indices). Through Epetra's row view: deal.II's row
-    /// iterators allocate a buffer of the global column count per row.
-    template <typename F>
-    void
-    for_each_entry(const TrilinosWrappers::SparseMatrix &matrix,
-                   const types::global_dof_index         row,
-                   const F                              &f)
-    {
-      const Epetra_CrsMatrix &m = matrix.trilinos_matrix();
-      int                     n = 0;
-      double                 *values;
-      int                    *columns;
-      m.ExtractMyRowView(m.LRID(
-                           static_cast<TrilinosWrappers::types::int_type>(row)),
-                         n,
-                         values,
-                         columns);
-      for (int k = 0; k < n; ++k)
-        f(types::global_dof_index(
-            TrilinosWrappers::global_column_index(m, columns[k])),
-          values[k]);
-    }
-
-
-    /// A distributed matrix with the locally owned rows @p rows (the k-th
-    /// is the k-th element of @p row_set; global column indices).
-    void
-    make_matrix(const IndexSet                 &row_set,
-                const IndexSet                 &column_set,
-                const MPI_Comm                  comm,
-                std::vector<Row>               &rows,
-                TrilinosWrappers::SparseMatrix &matrix)
-    {
-      TrilinosWrappers::SparsityPattern    sparsity(row_set, column_set, comm);
-      std::vector<types::global_dof_index> columns;
-      std::vector<double>                  values;
-      for (std::size_t k = 0; k < rows.size(); ++k)
-        {
-          std::sort(rows[k].begin(), rows[k].end());
-          columns.clear();
-          for (const auto &entry : rows[k])
-            columns.push_back(entry.first);
-          sparsity.add_entries(row_set.nth_index_in_set(k),
-                               columns.begin(),
-                               columns.end());
-        }
-      sparsity.compress();
-      matrix.reinit(sparsity);
-      for (std::size_t k = 0; k < rows.size(); ++k)
-        {
-          columns.clear();
-          values.clear();
-          for (const auto &entry : rows[k])
-            {
-              columns.push_back(entry.first);
-              values.push_back(entry.second);
-            }
-          if (!columns.empty())
-            matrix.set(row_set.nth_index_in_set(k),
-                       columns.size(),
-                       columns.data(),
-                       values.data());
-        }
-      matrix.compress(VectorOperation::insert);
-    }
-  } // namespace
 
 
   FlowBlockPreconditioner::FlowBlockPreconditioner(
@@ -146,13 +70,13 @@ namespace vesicle_iga
     pressure_owned.compress();
 
     // Split the owned rows into the four blocks.
-    std::vector<Row> rows_A(n_velocity), rows_B(n_velocity), rows_D(n_pressure),
-      rows_C(n_pressure);
+    std::vector<MatrixRow> rows_A(n_velocity), rows_B(n_velocity),
+      rows_D(n_pressure), rows_C(n_pressure);
     std::size_t k = 0;
     for (const auto i : owned)
       {
         const long position = local_position[k++];
-        for_each_entry(matrix, i, [&](const auto j, const double value) {
+        for_each_row_entry(matrix, i, [&](const auto j, const double value) {
           const auto b = j / nc, c = j % nc;
           const bool column_velocity = c < dim;
           const auto column          = column_velocity ? b * dim + c : b;
@@ -164,9 +88,9 @@ namespace vesicle_iga
               column, value);
         });
       }
-    make_matrix(velocity_owned, velocity_owned, comm, rows_A, A);
-    make_matrix(velocity_owned, pressure_owned, comm, rows_B, B);
-    make_matrix(pressure_owned, velocity_owned, comm, rows_D, D);
+    make_distributed_matrix(velocity_owned, velocity_owned, comm, rows_A, A);
+    make_distributed_matrix(velocity_owned, pressure_owned, comm, rows_B, B);
+    make_distributed_matrix(pressure_owned, velocity_owned, comm, rows_D, D);
 
     // The diagonal that replaces A in the Schur complement: the lumped
     // velocity mass (Cahouet-Chabard) or diag(A) (SIMPLE).
@@ -196,27 +120,19 @@ namespace vesicle_iga
     // added row by row (the patterns differ).
     TrilinosWrappers::SparseMatrix product;
     D.mmult(product, B, minus_inverse_diagonal);
-    std::vector<Row> rows_S(n_pressure);
+    std::vector<MatrixRow> rows_S(n_pressure);
     k = 0;
     for (const auto i : pressure_owned)
       {
-        Row &row = rows_S[k];
-        for_each_entry(product, i, [&](const auto j, const double value) {
+        MatrixRow &row = rows_S[k];
+        for_each_row_entry(product, i, [&](const auto j, const double value) {
           row.emplace_back(j, value);
         });
+        // Repeated columns are summed by make_distributed_matrix.
         row.insert(row.end(), rows_C[k].begin(), rows_C[k].end());
-        std::sort(row.begin(), row.end());
-        // Merge equal columns.
-        Row merged;
-        for (const auto &entry : row)
-          if (!merged.empty() && merged.back().first == entry.first)
-            merged.back().second += entry.second;
-          else
-            merged.push_back(entry);
-        row = std::move(merged);
         ++k;
       }
-    make_matrix(pressure_owned, pressure_owned, comm, rows_S, S);
+    make_distributed_matrix(pressure_owned, pressure_owned, comm, rows_S, S);
 
     // One null-space vector per velocity component.
     TrilinosWrappers::PreconditionAMG::AdditionalData velocity_data;

@@ -496,7 +496,7 @@ namespace vesicle_iga
                           Patterns::Integer(-1),
                           "Continuity at the breakpoints (-1: C^{p-1}; at "
                           "least 2).");
-        LinearSolverParameters::declare_flow(prm, "direct", "1e-8");
+        LinearSolverParameters::declare_flow(prm, "fgmres-block", "1e-8");
         prm.declare_entry("Reynolds number",
                           "5e-3",
                           Patterns::Double(),

@@ -6,6 +6,21 @@ namespace vesicle_iga
   using namespace dealii;
 
   template <int dim>
+  double
+  inverse_schur_viscosity(const Tensor<2, dim> &G,
+                          const Tensor<1, dim> &u,
+                          const double          time_step,
+                          const double          nu,
+                          const double          inverse_estimate_constant)
+  {
+    const double tau_m = NavierStokesRBVMS<dim>::tau_momentum(
+      G, u, time_step, nu, inverse_estimate_constant);
+    const double tau_c = 1. / (trace(G) * tau_m);
+    return 1. / (nu + tau_c);
+  }
+
+
+  template <int dim>
   void
   RBVMSLumpedSchurOperators<dim>::declare(TermDeclaration<dim> &d)
   {
@@ -36,17 +51,30 @@ namespace vesicle_iga
         Tensor<1, dim> uq;
         for (unsigned int a = 0; a < dim; ++a)
           uq[a] = in[u[a]][q];
-        const double          nu    = mu[q] / Re;
-        const Tensor<2, dim> &G     = in.metric(q);
-        const double          tau_m = NavierStokesRBVMS<dim>::tau_momentum(
-          G, uq, in.time_step, nu, coefficients.inverse_estimate_constant);
-        const double tau_c = 1. / (trace(G) * tau_m);
         for (unsigned int a = 0; a < dim; ++a)
           out[r_velocity[a]][q] += k_m;
-        out[r_pressure][q] += k_p / (nu + tau_c);
+        out[r_pressure][q] += k_p
+                              * inverse_schur_viscosity<dim>(
+                                in.metric(q),
+                                uq,
+                                in.time_step,
+                                mu[q] / Re,
+                                coefficients.inverse_estimate_constant);
       }
   }
 
+  template double
+  inverse_schur_viscosity<2>(const Tensor<2, 2> &,
+                             const Tensor<1, 2> &,
+                             double,
+                             double,
+                             double);
+  template double
+  inverse_schur_viscosity<3>(const Tensor<2, 3> &,
+                             const Tensor<1, 3> &,
+                             double,
+                             double,
+                             double);
   template class RBVMSLumpedSchurOperators<2>;
   template class RBVMSLumpedSchurOperators<3>;
 } // namespace vesicle_iga

@@ -13,6 +13,7 @@
 #include <vesicle_iga/kernel/system_assembler.h>
 #include <vesicle_iga/parallel/patch_mesh.h>
 #include <vesicle_iga/physics/flow_coefficients.h>
+#include <vesicle_iga/solvers/flow_block_preconditioner.h>
 #include <vesicle_iga/solvers/newton.h>
 #include <vesicle_iga/terms/navier_stokes_rbvms.h>
 #include <vesicle_iga/terms/rbvms_lumped_schur.h>
@@ -59,6 +60,31 @@ namespace vesicle_iga
     boundary_values(const SplineDofHandler<dim> & /*dofs*/,
                     const double /*t*/,
                     dealii::AffineConstraints<double> & /*constraints*/) const
+    {}
+    /// Linear solver/Method = fgmres-block: the preconditioner of the whole
+    /// coupled tangent around the flow's velocity-pressure blocks @p flow
+    /// (which expect the flow's own layout, basis (dim + 1) + component);
+    /// @p increments: the strong conditions. Null: the coupling has none
+    /// and the method is refused.
+    virtual std::unique_ptr<LumpedOperatorPreconditioner>
+    block_preconditioner(
+      std::unique_ptr<FlowBlockPreconditioner> /*flow*/,
+      const SplineDofHandler<dim> & /*dofs*/,
+      const dealii::AffineConstraints<double> & /*increments*/,
+      const FlowBlockPreconditionerParameters & /*parameters*/)
+    {
+      return nullptr;
+    }
+    /// Terms that add the coupled fields' lumped operators of that
+    /// preconditioner (assembled as a residual with the flow's), set up
+    /// for @p state by prepare_lumped_operators().
+    virtual std::vector<Term<dim> *>
+    lumped_operator_terms()
+    {
+      return {};
+    }
+    virtual void
+    prepare_lumped_operators(const AssemblyState & /*state*/)
     {}
   };
 

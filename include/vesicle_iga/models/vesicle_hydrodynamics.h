@@ -6,6 +6,7 @@
 #include <vesicle_iga/terms/hydrodynamic_bending.h>
 #include <vesicle_iga/terms/local_inextensibility.h>
 #include <vesicle_iga/terms/phase_field_advection.h>
+#include <vesicle_iga/terms/tension_lumped_schur.h>
 #include <vesicle_iga/terms/vesicle_interaction.h>
 #include <vesicle_iga/terms/viscosity_contrast.h>
 
@@ -139,6 +140,18 @@ namespace vesicle_iga
     boundary_values(const SplineDofHandler<dim>       &dofs,
                     const double                       t,
                     dealii::AffineConstraints<double> &c) const override;
+    /// VesicleBlockPreconditioner around the flow blocks (Method =
+    /// fgmres-block), the phase-field blocks by spline multigrid or AMG.
+    std::unique_ptr<LumpedOperatorPreconditioner>
+    block_preconditioner(
+      std::unique_ptr<FlowBlockPreconditioner> flow,
+      const SplineDofHandler<dim>             &dofs,
+      const dealii::AffineConstraints<double> &increments,
+      const FlowBlockPreconditionerParameters &parameters) override;
+    std::vector<Term<dim> *>
+    lumped_operator_terms() override;
+    void
+    prepare_lumped_operators(const AssemblyState &state) override;
 
     // TimeDependentProblem
     double
@@ -178,6 +191,7 @@ namespace vesicle_iga
     std::vector<std::unique_ptr<VesicleInteraction<dim>>>      interaction;
     std::vector<std::pair<unsigned int, unsigned int>>         pairs;
     std::unique_ptr<ViscosityContrast<dim>>                    viscosity;
+    std::vector<std::unique_ptr<TensionLumpedSchur<dim>>>      tension_schur;
     std::unique_ptr<IncompressibleFlow<dim>>                   flow_model;
     std::vector<double> area_0, volume_0, lambda_g, lambda_v;
     double              last_dt = 0;

@@ -15,6 +15,17 @@
 
 namespace vesicle_iga
 {
+  /// A block preconditioner whose Schur complement approximations need
+  /// lumped operators assembled at the state of each new matrix.
+  class LumpedOperatorPreconditioner : public MatrixPreconditioner
+  {
+  public:
+    /// The lumped operators of the coming matrix, in its layout.
+    virtual void
+    set_lumped_operators(const dealii::TrilinosWrappers::MPI::Vector &lumped)
+      = 0;
+  };
+
 
   /**
    * Block upper-triangular preconditioner of the RBVMS velocity-pressure
@@ -53,7 +64,7 @@ namespace vesicle_iga
    * functions (SplineDofHandler), so the blocks are extracted row by row
    * without communication.
    */
-  class FlowBlockPreconditioner : public MatrixPreconditioner
+  class FlowBlockPreconditioner : public LumpedOperatorPreconditioner
   {
   public:
     FlowBlockPreconditioner(const unsigned int                       dim,
@@ -66,7 +77,8 @@ namespace vesicle_iga
     /// The lumped velocity mass (velocity entries) and lumped viscous
     /// pressure mass (pressure entries) of the coming matrix.
     void
-    set_lumped_operators(const dealii::TrilinosWrappers::MPI::Vector &lumped);
+    set_lumped_operators(
+      const dealii::TrilinosWrappers::MPI::Vector &lumped) override;
     void
     initialize(const dealii::TrilinosWrappers::SparseMatrix &matrix) override;
     void

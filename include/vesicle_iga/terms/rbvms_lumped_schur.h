@@ -7,6 +7,17 @@
 
 namespace vesicle_iga
 {
+  /// 1 / (nu + tau_C) at a point, tau_C of (H19) for the velocity @p u: the
+  /// inverse viscosity of the Stokes Schur complement augmented by the
+  /// grad-div term, the weight of the lumped viscous Schur operators.
+  template <int dim>
+  double
+  inverse_schur_viscosity(const dealii::Tensor<2, dim> &G,
+                          const dealii::Tensor<1, dim> &u,
+                          const double                  time_step,
+                          const double                  nu,
+                          const double inverse_estimate_constant);
+
   /**
    * The lumped operators of the Cahouet-Chabard Schur-complement
    * approximation of the flow's block preconditioner
