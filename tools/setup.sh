@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs what vesicle-iga needs on Debian 12 (run as root), builds it with
-# -j2 and runs the default study. README command 1.
+# -j2, runs the default study (two vesicles in a shear flow) and plots it.
+# README command 1.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 export DEBIAN_FRONTEND=noninteractive
@@ -15,4 +16,7 @@ if [ -n "$missing" ]; then
 fi
 tools/build.sh
 source tools/mpi-env.sh
-mpirun -np 2 build/vesicle-iga prm/poisson-mms.prm
+mpirun -np 2 build/vesicle-iga prm/doublet-shear-quick.prm
+/usr/bin/python3 tools/plot-vesicles.py output/doublet-shear-quick/vesicles.png \
+  output/doublet-shear-quick
+echo "Figure: output/doublet-shear-quick/vesicles.png"

@@ -416,6 +416,22 @@ namespace vesicle_iga
 
 
   template <int dim>
+  double
+  VesicleHydrodynamics<dim>::local_error(const double atol,
+                                         const double rtol) const
+  {
+    if (phase_entries.empty())
+      {
+        const auto        &dofs = flow_model->dofs();
+        const unsigned int nc   = dofs.n_components();
+        for (const auto g : dofs.locally_owned_dofs())
+          phase_entries.push_back(g % nc > dim && g % nc <= dim + n);
+      }
+    return flow_model->get_stepper().local_error(atol, rtol, &phase_entries);
+  }
+
+
+  template <int dim>
   std::vector<Term<dim> *>
   VesicleHydrodynamics<dim>::lumped_operator_terms()
   {

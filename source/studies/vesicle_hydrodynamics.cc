@@ -186,6 +186,7 @@ namespace vesicle_iga
       InitialVesicle::StretchFormula stretch;
       std::string                    initial_velocity;
       bool                           write_vtu, write_tension;
+      double                         stabilisation_time_scale = 0;
     };
 
 
@@ -217,6 +218,7 @@ namespace vesicle_iga
       membrane.epsilon            = prm.get_double("Epsilon");
       flow_parameters.weak_penalty_constant
         = prm.get_double("Weak penalty constant");
+      stabilisation_time_scale         = prm.get_double("RBVMS time scale");
       flow_parameters.weak_inflow_term = prm.get_bool("Weak inflow term");
       const int quadrature             = prm.get_integer("Quadrature points");
       flow_parameters.quadrature_points
@@ -400,6 +402,13 @@ namespace vesicle_iga
       FlowCoefficients<dim> coefficients;
       coefficients.reynolds_number           = membrane.reynolds_number;
       coefficients.inverse_estimate_constant = 6. * std::pow(degree, 4);
+      // Adaptive steps need tau_M independent of dt (doc/hydrodynamics.md).
+      coefficients.stabilisation_time_scale
+        = stabilisation_time_scale > 0 ?
+            stabilisation_time_scale :
+            (loop_parameters.step.mode == "adaptive" ?
+               loop_parameters.step.initial_dt :
+               0.);
       VesicleHydrodynamics<dim>   model(context.communicator,
                                       space,
                                       membrane,
@@ -552,6 +561,15 @@ namespace vesicle_iga
                           Patterns::Anything(),
                           "u(x, 0), dim formulas separated by ';' (spec "
                           "4.11: 0, an impulsive start).");
+        prm.declare_entry(
+          "RBVMS time scale",
+          "0",
+          Patterns::Double(0),
+          "The dt in the transient term 4 / dt^2 of tau_M (H19). 0: the "
+          "step being taken (the source's choice) with fixed steps, the "
+          "Initial dt with Step control = adaptive; > 0: this fixed value. "
+          "A fixed value keeps the discrete equations independent of dt, "
+          "which adaptive steps need (doc/hydrodynamics.md).");
         prm.declare_entry("Weak penalty constant",
                           "-1",
                           Patterns::Double(),

@@ -191,7 +191,7 @@ namespace vesicle_iga
     f.r_c   = trace(f.grad_u);
     f.tau_m = tau_momentum(f.G,
                            f.u,
-                           in.time_step,
+                           coefficients.tau_time_step(in.time_step),
                            mu / f.Re,
                            coefficients.inverse_estimate_constant);
     f.tau_c = 1. / (trace(f.G) * f.tau_m);

@@ -57,7 +57,7 @@ namespace vesicle_iga
                               * inverse_schur_viscosity<dim>(
                                 in.metric(q),
                                 uq,
-                                in.time_step,
+                                coefficients.tau_time_step(in.time_step),
                                 mu[q] / Re,
                                 coefficients.inverse_estimate_constant);
       }

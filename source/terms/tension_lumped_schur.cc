@@ -41,7 +41,7 @@ namespace vesicle_iga
           += k_lambda * delta * delta
              * inverse_schur_viscosity<dim>(in.metric(q),
                                             uq,
-                                            in.time_step,
+                                            flow.tau_time_step(in.time_step),
                                             mu[q] / flow.reynolds_number,
                                             flow.inverse_estimate_constant);
       }

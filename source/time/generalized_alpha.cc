@@ -190,12 +190,15 @@ namespace vesicle_iga
 
   template <int dim>
   double
-  GeneralizedAlphaStepper<dim>::local_error(const double atol,
-                                            const double rtol) const
+  GeneralizedAlphaStepper<dim>::local_error(
+    const double             atol,
+    const double             rtol,
+    const std::vector<bool> *selected) const
   {
     if (dt_previous <= 0)
       return -1;
-    return local_error_norm(U_next, U, U_previous, dt, dt_previous, atol, rtol);
+    return local_error_norm(
+      U_next, U, U_previous, dt, dt_previous, atol, rtol, selected);
   }
 
 

@@ -16,22 +16,28 @@ namespace vesicle_iga
                    const double                                 dt,
                    const double                                 dt_prev,
                    const double                                 atol,
-                   const double                                 rtol)
+                   const double                                 rtol,
+                   const std::vector<bool>                     *selected)
   {
     const double                          a = 1 + dt_prev / dt;
     dealii::TrilinosWrappers::MPI::Vector lte(U_new);
     lte *= 1 / a;
     lte.add(-1 / (a - 1), U_n, 1 / (a * (a - 1)), U_nm1);
-    double sum = 0;
+    double      sum = 0;
+    std::size_t k = 0, n = 0;
     for (const auto i : U_new.locally_owned_elements())
       {
+        if (selected && !(*selected)[k++])
+          continue;
+        ++n;
         const double w
           = atol
             + rtol * std::max(std::abs(U_new[i]), std::abs(U_new[i] + lte[i]));
         sum += std::pow(lte[i] / w, 2);
       }
-    return std::sqrt(
-      dealii::Utilities::MPI::sum(sum, U_new.get_mpi_communicator())
-      / U_new.size());
+    const MPI_Comm comm = U_new.get_mpi_communicator();
+    const double   N
+      = selected ? Utilities::MPI::sum(double(n), comm) : double(U_new.size());
+    return std::sqrt(Utilities::MPI::sum(sum, comm) / std::max(N, 1.));
   }
 } // namespace vesicle_iga

@@ -151,5 +151,18 @@ namespace vesicle_iga
     }
     /// C_I of tau_M (H19); spec: 6 p^4 (read of the source's "6P4").
     double inverse_estimate_constant = 96;
+    /// The time scale of the transient term 4 / dt^2 of tau_M (H19): 0, the
+    /// step being taken (the source's choice); > 0, this fixed value, so
+    /// that the discrete problem does not change with dt (adaptive steps:
+    /// a step and its retry with a smaller dt then solve the same
+    /// equations, and the local error estimate sees the solution's change,
+    /// not a change of the stabilisation).
+    double stabilisation_time_scale = 0;
+    /// The dt that tau_M uses for a step of size @p dt.
+    double
+    tau_time_step(const double dt) const
+    {
+      return stabilisation_time_scale > 0 ? stabilisation_time_scale : dt;
+    }
   };
 } // namespace vesicle_iga

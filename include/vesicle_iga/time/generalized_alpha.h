@@ -162,7 +162,9 @@ namespace vesicle_iga
     /// Weighted RMS norm of the local error estimate (N5) of the solved
     /// step; < 0 before two accepted steps.
     double
-    local_error(const double atol, const double rtol) const;
+    local_error(const double             atol,
+                const double             rtol,
+                const std::vector<bool> *selected = nullptr) const;
 
     // NonlinearProblem: x is the rate at t_{n+1}.
     void

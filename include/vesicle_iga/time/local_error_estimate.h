@@ -2,6 +2,8 @@
 
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <vector>
+
 namespace vesicle_iga
 {
   /**
@@ -10,6 +12,9 @@ namespace vesicle_iga
    * with steps dt = t_{n+1} - t_n and dt_prev = t_n - t_{n-1}):
    *   LTE = U_{n+1}/a - U_n/(a-1) + U_{n-1}/(a(a-1)),  a = 1 + dt_prev/dt,
    *   e   = sqrt(1/N sum_j (LTE_j / (atol + rtol max(|U_j|, |U_j+LTE_j|)))^2).
+   * @p selected (optional, one flag per locally owned entry): the sum and
+   * N run over the selected entries only (e.g. the phase fields of a
+   * model whose other fields follow them quasi-statically).
    */
   double
   local_error_norm(const dealii::TrilinosWrappers::MPI::Vector &U_new,
@@ -18,5 +23,6 @@ namespace vesicle_iga
                    const double                                 dt,
                    const double                                 dt_prev,
                    const double                                 atol,
-                   const double                                 rtol);
+                   const double                                 rtol,
+                   const std::vector<bool> *selected = nullptr);
 } // namespace vesicle_iga
