@@ -1,19 +1,19 @@
 #!/usr/bin/env bash
 # Linear solver of the coupled vesicle-flow system (spec Part H): one
-# vesicle (R_0 = 0.45, chi = 0.84) in a closed box [0,2]^2 of fluid at rest,
+# vesicle (R_0 = 0.45, chi = 0.84, centre (1, 1)) in a closed box [-2,2]^2 of fluid at rest,
 # cubic C^2 elements, eps = 0.125 (fixed, so that only h changes), dt =
 # 1e-3, one step, for N elements per unit length; Newton and FGMRES
 # iterations, and the time per Newton iteration of assembly (tangent and
 # residual), preconditioner set-up and linear solve. Usage (after
 # tools/build.sh):
-#   tools/bench/run-vesicle-solver.sh [elements per unit length...]  (default 16 32 64)
+#   tools/bench/run-vesicle-solver.sh [elements per unit length...]  (default 8 16 32)
 # Environment: METHOD (fgmres-block or direct), RANKS (default "1 2"),
 # EXTRA (lines added to the Block preconditioner subsection).
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 source tools/mpi-env.sh
 source tools/bench/log-fields.sh
-sizes=${*:-16 32 64}
+sizes=${*:-8 16 32}
 METHOD=${METHOD:-fgmres-block}
 RANKS=${RANKS:-1 2}
 EXTRA=${EXTRA:-}
@@ -32,8 +32,9 @@ subsection Vesicle hydrodynamics
   set Write VTU = false
   set Write membrane samples = false
   subsection Mesh
+    set Lower corner = -2, -2
     set Upper corner = 2, 2
-    set Elements = $((2 * m)), $((2 * m))
+    set Elements = $((4 * m)), $((4 * m))
   end
   subsection Boundary 1
     set Type = strong
