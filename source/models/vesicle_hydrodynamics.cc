@@ -326,6 +326,10 @@ namespace vesicle_iga
         ViscosityContrastFormula<dim>(velocity, phases, membrane));
     flow_model = std::make_unique<IncompressibleFlow<dim>>(
       comm, space, flow_coefficients, conditions, parameters, timer, this);
+    const auto        &dofs = flow_model->dofs();
+    const unsigned int nc   = dofs.n_components();
+    for (const auto g : dofs.locally_owned_dofs())
+      phase_entries.push_back(g % nc > dim && g % nc <= dim + n);
   }
 
 
@@ -420,13 +424,6 @@ namespace vesicle_iga
   VesicleHydrodynamics<dim>::local_error(const double atol,
                                          const double rtol) const
   {
-    if (phase_entries.empty())
-      {
-        const auto        &dofs = flow_model->dofs();
-        const unsigned int nc   = dofs.n_components();
-        for (const auto g : dofs.locally_owned_dofs())
-          phase_entries.push_back(g % nc > dim && g % nc <= dim + n);
-      }
     return flow_model->get_stepper().local_error(atol, rtol, &phase_entries);
   }
 

@@ -197,6 +197,6 @@ namespace vesicle_iga
     std::vector<double> area_0, volume_0, lambda_g, lambda_v;
     double              last_dt = 0;
     /// Per locally owned unknown: whether it is a phase field.
-    mutable std::vector<bool> phase_entries;
+    std::vector<bool> phase_entries;
   };
 } // namespace vesicle_iga
