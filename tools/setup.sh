@@ -5,7 +5,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 export DEBIAN_FRONTEND=noninteractive
-packages="libdeal.ii-dev cmake g++ make numdiff openmpi-bin python3-matplotlib gnuplot-nox"
+packages="libdeal.ii-dev cmake g++ make numdiff openmpi-bin python3-matplotlib python3-scipy gnuplot-nox"
 missing=""
 for p in $packages; do
   dpkg -s "$p" >/dev/null 2>&1 || missing="$missing $p"

@@ -233,6 +233,23 @@ namespace vesicle_iga
   } // namespace
 
 
+  double
+  ZeroContour::enclosed_area() const
+  {
+    // the repeated first point closes the polygon with a zero-length edge
+    return closed ? signed_area(points) : 0.;
+  }
+
+
+  double
+  ZeroContour::reduced_area() const
+  {
+    return closed && length() > 0 ?
+             4 * M_PI * std::abs(enclosed_area()) / (length() * length()) :
+             0.;
+  }
+
+
   std::vector<ZeroContour>
   zero_contours(const SplineSpace<2>      &space,
                 const std::vector<double> &natural,

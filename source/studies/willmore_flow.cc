@@ -20,6 +20,7 @@
 #include <vesicle_iga/models/phase_field_flow.h>
 #include <vesicle_iga/physics/vesicle_shape.h>
 #include <vesicle_iga/postprocess/level_set_extent.h>
+#include <vesicle_iga/postprocess/zero_contour.h>
 #include <vesicle_iga/spline/box_space_parameters.h>
 #include <vesicle_iga/studies/study.h>
 #include <vesicle_iga/time/time_loop.h>
@@ -86,6 +87,12 @@ namespace vesicle_iga
       std::vector<double>
       extents() const;
 
+      /// 2D: length, enclosed area and reduced area 4 pi A / L^2 of the
+      /// longest closed piece of the zero level set (the sharp measures
+      /// that the diffuse (E9) approximate; issue 16, item 1).
+      std::array<double, 3>
+      zero_level_set_geometry() const;
+
       double max_constraint_error = 0, max_energy_increase = 0,
              max_lagrangian_increase = 0;
 
@@ -123,6 +130,10 @@ namespace vesicle_iga
         c.emplace_back(n);
       for (unsigned int d = 0; d < dim; ++d)
         c.push_back(std::string("extent_") + "xyz"[d]);
+      if (dim == 2)
+        for (const char *n :
+             {"contour_length", "contour_area", "contour_reduced_area"})
+          c.emplace_back(n);
       c.emplace_back("interface_speed");
       for (unsigned int d = 0; d < dim; ++d)
         c.push_back(std::string("drift_velocity_") + "xyz"[d]);
@@ -149,6 +160,24 @@ namespace vesicle_iga
         e.push_back(
           zero_level_set_extent(model.get_dofs().get_space(), c, s.center, d));
       return e;
+    }
+
+
+    template <int dim>
+    std::array<double, 3>
+    WillmoreMonitor<dim>::zero_level_set_geometry() const
+    {
+      if constexpr (dim == 2)
+        {
+          const auto c = gather_natural(model.get_dofs(), model.solution());
+          for (const ZeroContour &piece :
+               zero_contours(model.get_dofs().get_space(), c, 1, 0, 8))
+            if (piece.closed)
+              return {{piece.length(),
+                       std::abs(piece.enclosed_area()),
+                       piece.reduced_area()}};
+        }
+      return {{0., 0., 0.}};
     }
 
 
@@ -185,6 +214,9 @@ namespace vesicle_iga
         row.push_back(v);
       for (const double e : extents())
         row.push_back(e);
+      if (dim == 2)
+        for (const double g : zero_level_set_geometry())
+          row.push_back(g);
       const auto motion = model.interface_motion(info.dt);
       speed             = motion.speed;
       row.push_back(speed);

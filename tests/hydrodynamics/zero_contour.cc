@@ -8,9 +8,10 @@
 //    moves the zero set by less than that), length 2 pi R within 1e-3
 //    (the chords of 4 samples per element are h / 4 long: relative error
 //    (h/4)^2 / (24 R^2) = 4e-5), counter-clockwise (signed area pi R^2
-//    within 1e-3), starting at the rightmost point (R, 0) from the centre,
-//    the length closer to 2 pi R with 8 samples per element than with 4, and
-//    every point on the spline's zero set (|phi| < 1e-10 there: the
+//    within 1e-3; reduced area 4 pi A / L^2 = 1 within 2e-3, twice the
+//    length's error bound), starting at the rightmost point (R, 0) from the
+//    centre, the length closer to 2 pi R with 8 samples per element than with
+//    4, and every point on the spline's zero set (|phi| < 1e-10 there: the
 //    crossings are not those of a linear interpolant);
 //  - a linear function g = 2x - y + 0.5, reproduced exactly by the
 //    interpolant: the values reported at the contour points equal g there
@@ -69,7 +70,7 @@ main()
   const auto verdict = [](const bool ok) { return ok ? "ok" : "FAILED"; };
 
   const auto circle       = zero_contours(space, natural, nc, 0, 4);
-  double     worst_radius = 0, worst_g = 0, worst_phi = 0, area = 0;
+  double     worst_radius = 0, worst_g = 0, worst_phi = 0;
   for (unsigned int k = 0; k < circle[0].points.size(); ++k)
     {
       const Point<2> &p = circle[0].points[k];
@@ -78,12 +79,8 @@ main()
       worst_g
         = std::max(worst_g,
                    std::abs(circle[0].values[k][1] - (2 * p[0] - p[1] + 0.5)));
-      if (k > 0)
-        {
-          const Point<2> &q = circle[0].points[k - 1];
-          area += (q[0] * p[1] - p[0] * q[1]) / 2;
-        }
     }
+  const double area = circle[0].enclosed_area();
   const double length_error_4
     = std::abs(circle[0].length() / (2 * M_PI * R) - 1);
   const auto   fine           = zero_contours(space, natural, nc, 0, 8);
@@ -98,6 +95,8 @@ main()
       << verdict(length_error_4 < 1e-3)
       << "\ncircle: counter-clockwise, area pi R^2 within 1e-3: "
       << verdict(std::abs(area / (M_PI * R * R) - 1) < 1e-3)
+      << "\ncircle: reduced area 4 pi A / L^2 within 2e-3 of 1: "
+      << verdict(std::abs(circle[0].reduced_area() - 1) < 2e-3)
       << "\ncircle: starts at the rightmost point: "
       << verdict(start.distance({1.5, 1.}) < 1e-3)
       << "\ncircle: length closer to 2 pi R with 8 samples than with 4: "
@@ -116,6 +115,8 @@ main()
   out << "\nstraight line y = 1.3: one open piece of length 2: "
       << verdict(line.size() == 1 && !line[0].closed
                  && std::abs(line[0].length() - 2) < 1e-12)
+      << "\nstraight line: no enclosed area, reduced area 0: "
+      << verdict(line[0].enclosed_area() == 0 && line[0].reduced_area() == 0)
       << '\n';
 
   std::cout << "radius error " << worst_radius << ", |phi| " << worst_phi

@@ -27,6 +27,13 @@ namespace vesicle_iga
     {
       return arc_length.empty() ? 0. : arc_length.back();
     }
+    /// Area enclosed by a closed curve (shoelace over its points, positive
+    /// counter-clockwise); 0 for an open one.
+    double
+    enclosed_area() const;
+    /// 4 pi A / L^2 of a closed curve (1 for a circle); 0 for an open one.
+    double
+    reduced_area() const;
   };
 
 
