@@ -289,9 +289,11 @@ namespace vesicle_iga
     const std::vector<VelocityCondition<dim>> &conditions,
     const IncompressibleFlowParameters        &parameters,
     const unsigned int                         n_vesicles,
-    TimerOutput                               &timer)
+    TimerOutput                               &timer,
+    const PhaseFieldBlockParameters           &phase_field_blocks)
     : membrane(membrane)
     , flow_coefficients(flow)
+    , phase_field_blocks(phase_field_blocks)
     , n(n_vesicles)
     , area_0(n_vesicles)
     , volume_0(n_vesicles)
@@ -380,7 +382,7 @@ namespace vesicle_iga
   {
     const unsigned int                                 nc = dofs.n_components();
     std::vector<std::unique_ptr<MatrixPreconditioner>> phase_blocks(n);
-    if (parameters.phase_field_preconditioner == "spline-multigrid")
+    if (phase_field_blocks.preconditioner == "spline-multigrid")
       for (unsigned int i = 0; i < n; ++i)
         {
           // Row of basis b in the phase-field block: new_index(b); the
@@ -391,10 +393,10 @@ namespace vesicle_iga
               owned.add_index(g / nc);
           owned.compress();
           SplineMultigridParameters mg;
-          mg.smoother = parameters.phase_field_smoother;
-          mg.sweeps   = parameters.phase_field_sweeps;
-          if (parameters.phase_field_coarse_size > 0)
-            mg.coarse_size = parameters.phase_field_coarse_size;
+          mg.smoother = phase_field_blocks.smoother;
+          mg.sweeps   = phase_field_blocks.sweeps;
+          if (phase_field_blocks.coarse_size > 0)
+            mg.coarse_size = phase_field_blocks.coarse_size;
           phase_blocks[i] = std::make_unique<SplineMultigrid<dim>>(
             dofs,
             1,

@@ -133,28 +133,6 @@ namespace vesicle_iga
       "counts independent of the mesh from Stokes to transient flows. "
       "simple: S = C - D diag(A)^-1 B (grows with refinement in viscous "
       "flows; kept for comparison).");
-    prm.declare_entry(
-      "Phase field preconditioner",
-      "spline-multigrid",
-      Patterns::Selection("spline-multigrid|amg"),
-      "Vesicles in the flow only: one V-cycle on each phase-field block "
-      "(mass, advection and the fourth-order bending operator): the spline "
-      "multigrid (smoother 'Phase field smoother') or Trilinos ML AMG.");
-    prm.declare_entry("Phase field smoother",
-                      "ssor",
-                      Patterns::Selection("ssor|chebyshev|ilu"),
-                      "Smoother of the phase-field spline multigrid.");
-    prm.declare_entry("Phase field sweeps",
-                      "2",
-                      Patterns::Integer(1),
-                      "Smoother sweeps (or Chebyshev degree) of the "
-                      "phase-field spline multigrid.");
-    prm.declare_entry("Phase field coarse size",
-                      "0",
-                      Patterns::Integer(0),
-                      "The phase-field spline multigrid coarsens until a "
-                      "level has at most this many unknowns, solved by "
-                      "sparse LU (0: the multigrid's default).");
     prm.leave_subsection();
   }
 
@@ -163,17 +141,13 @@ namespace vesicle_iga
   FlowBlockPreconditionerParameters::parse(ParameterHandler &prm)
   {
     prm.enter_subsection("Block preconditioner");
-    velocity_preconditioner    = prm.get("Velocity preconditioner");
-    velocity_sweeps            = prm.get_integer("Velocity sweeps");
-    velocity_coarse_size       = prm.get_integer("Velocity coarse size");
-    velocity_smoother          = prm.get("Velocity smoother");
-    schur_sweeps               = prm.get_integer("Schur sweeps");
-    velocity_elliptic          = prm.get_bool("Velocity elliptic");
-    schur_approximation        = prm.get("Schur approximation");
-    phase_field_preconditioner = prm.get("Phase field preconditioner");
-    phase_field_smoother       = prm.get("Phase field smoother");
-    phase_field_sweeps         = prm.get_integer("Phase field sweeps");
-    phase_field_coarse_size    = prm.get_integer("Phase field coarse size");
+    velocity_preconditioner = prm.get("Velocity preconditioner");
+    velocity_sweeps         = prm.get_integer("Velocity sweeps");
+    velocity_coarse_size    = prm.get_integer("Velocity coarse size");
+    velocity_smoother       = prm.get("Velocity smoother");
+    schur_sweeps            = prm.get_integer("Schur sweeps");
+    velocity_elliptic       = prm.get_bool("Velocity elliptic");
+    schur_approximation     = prm.get("Schur approximation");
     prm.leave_subsection();
   }
 

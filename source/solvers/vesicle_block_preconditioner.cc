@@ -7,6 +7,46 @@
 
 namespace vesicle_iga
 {
+  void
+  PhaseFieldBlockParameters::declare(dealii::ParameterHandler &prm)
+  {
+    using dealii::Patterns::Integer;
+    using dealii::Patterns::Selection;
+    prm.declare_entry(
+      "Phase field preconditioner",
+      "spline-multigrid",
+      Selection("spline-multigrid|amg"),
+      "One V-cycle on each phase-field block (mass, advection and the "
+      "fourth-order bending operator): the spline multigrid (smoother "
+      "'Phase field smoother') or Trilinos ML AMG.");
+    prm.declare_entry("Phase field smoother",
+                      "ssor",
+                      Selection("ssor|chebyshev|ilu"),
+                      "Smoother of the phase-field spline multigrid.");
+    prm.declare_entry("Phase field sweeps",
+                      "2",
+                      Integer(1),
+                      "Smoother sweeps (or Chebyshev degree) of the "
+                      "phase-field spline multigrid.");
+    prm.declare_entry("Phase field coarse size",
+                      "0",
+                      Integer(0),
+                      "The phase-field spline multigrid coarsens until a "
+                      "level has at most this many unknowns, solved by "
+                      "sparse LU (0: the multigrid's default).");
+  }
+
+
+  void
+  PhaseFieldBlockParameters::parse(dealii::ParameterHandler &prm)
+  {
+    preconditioner = prm.get("Phase field preconditioner");
+    smoother       = prm.get("Phase field smoother");
+    sweeps         = prm.get_integer("Phase field sweeps");
+    coarse_size    = prm.get_integer("Phase field coarse size");
+  }
+
+
   using namespace dealii;
 
   namespace

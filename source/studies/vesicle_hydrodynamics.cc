@@ -181,6 +181,7 @@ namespace vesicle_iga
       MembraneCoefficients           membrane;
       FlowBoundaryParameters         boundaries;
       IncompressibleFlowParameters   flow_parameters;
+      PhaseFieldBlockParameters      phase_field_blocks;
       TimeLoop::Parameters           loop_parameters;
       std::vector<VesicleEntry>      vesicles;
       InitialVesicle::StretchFormula stretch;
@@ -207,6 +208,11 @@ namespace vesicle_iga
       degree     = prm.get_integer("Degree");
       continuity = prm.get_integer("Continuity");
       flow_parameters.solver.parse_flow(prm);
+      prm.enter_subsection("Linear solver");
+      prm.enter_subsection("Block preconditioner");
+      phase_field_blocks.parse(prm);
+      prm.leave_subsection();
+      prm.leave_subsection();
       flow_parameters.newton.parse(prm);
       membrane.reynolds_number    = prm.get_double("Reynolds number");
       membrane.capillary_number   = prm.get_double("Capillary number");
@@ -416,7 +422,8 @@ namespace vesicle_iga
                                       conditions,
                                       parameters,
                                       vesicles.size(),
-                                      timer);
+                                      timer,
+                                      phase_field_blocks);
       std::vector<InitialVesicle> shapes;
       std::vector<std::function<double(const Point<dim> &)>> phases;
       for (const auto &v : vesicles)
@@ -506,6 +513,11 @@ namespace vesicle_iga
                           "Continuity at the breakpoints (-1: C^{p-1}; at "
                           "least 2).");
         LinearSolverParameters::declare_flow(prm, "fgmres-block", "1e-8");
+        prm.enter_subsection("Linear solver");
+        prm.enter_subsection("Block preconditioner");
+        PhaseFieldBlockParameters::declare(prm);
+        prm.leave_subsection();
+        prm.leave_subsection();
         prm.declare_entry("Reynolds number",
                           "5e-3",
                           Patterns::Double(),

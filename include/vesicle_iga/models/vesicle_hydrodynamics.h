@@ -2,6 +2,7 @@
 
 #include <vesicle_iga/models/incompressible_flow.h>
 #include <vesicle_iga/physics/hydrodynamic_membrane.h>
+#include <vesicle_iga/solvers/vesicle_block_preconditioner.h>
 #include <vesicle_iga/terms/global_constraint_forcing.h>
 #include <vesicle_iga/terms/hydrodynamic_bending.h>
 #include <vesicle_iga/terms/local_inextensibility.h>
@@ -58,7 +59,9 @@ namespace vesicle_iga
                          const std::vector<VelocityCondition<dim>> &conditions,
                          const IncompressibleFlowParameters        &parameters,
                          const unsigned int                         n_vesicles,
-                         dealii::TimerOutput                       &timer);
+                         dealii::TimerOutput                       &timer,
+                         const PhaseFieldBlockParameters &phase_field_blocks
+                         = PhaseFieldBlockParameters());
 
     unsigned int
     n_vesicles() const
@@ -184,6 +187,7 @@ namespace vesicle_iga
 
     const MembraneCoefficients                             membrane;
     const FlowCoefficients<dim>                            flow_coefficients;
+    const PhaseFieldBlockParameters                        phase_field_blocks;
     const unsigned int                                     n;
     std::vector<std::unique_ptr<PhaseFieldAdvection<dim>>> advection;
     std::vector<std::unique_ptr<HydrodynamicBending<dim>>> bending;

@@ -33,13 +33,6 @@ namespace vesicle_iga
     std::string velocity_preconditioner = "spline-multigrid";
     /// "cahouet-chabard" or "simple" (see FlowBlockPreconditioner).
     std::string schur_approximation = "cahouet-chabard";
-    /// Vesicles in the flow (VesicleBlockPreconditioner): "spline-multigrid"
-    /// or "amg" on each phase-field block, the multigrid's smoother and
-    /// sweeps.
-    std::string  phase_field_preconditioner = "spline-multigrid";
-    std::string  phase_field_smoother       = "ssor";
-    unsigned int phase_field_sweeps         = 2;
-    unsigned int phase_field_coarse_size    = 0;
 
     static void
     declare(dealii::ParameterHandler &prm);

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <deal.II/base/parameter_handler.h>
+
 #include <deal.II/lac/trilinos_precondition.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
@@ -14,6 +16,27 @@
 
 namespace vesicle_iga
 {
+  /// Settings of the phase-field blocks of VesicleBlockPreconditioner,
+  /// declared by the vesicle study only (subsection "Linear solver/Block
+  /// preconditioner", next to the flow's own block settings).
+  struct PhaseFieldBlockParameters
+  {
+    /// "spline-multigrid" or "amg" on each phase-field block.
+    std::string preconditioner = "spline-multigrid";
+    /// Smoother and sweeps of the phase-field spline multigrid.
+    std::string  smoother = "ssor";
+    unsigned int sweeps   = 2;
+    /// Largest level solved by LU (0: the SplineMultigrid default).
+    unsigned int coarse_size = 0;
+
+    /// Declares (parses) the entries in the current subsection.
+    static void
+    declare(dealii::ParameterHandler &prm);
+    void
+    parse(dealii::ParameterHandler &prm);
+  };
+
+
   /**
    * Block preconditioner of the tangent of N vesicles in a flow (spec Part
    * H, doc/hydrodynamics.md "Linear solver"). Unknowns interleaved per
