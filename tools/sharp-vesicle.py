@@ -314,6 +314,7 @@ def main():
     a.add_argument("--modes", type=int, default=8)
     b = sub.add_parser("branches")
     b.add_argument("--csv", required=True)
+    b.add_argument("--plot", help="PNG of both branches (matplotlib)")
     b.add_argument("--modes", type=int, default=8)
     args = p.parse_args()
 
@@ -370,6 +371,8 @@ def main():
                      out["extent_short"][0] * scale))
     else:
         branches(args.csv, args.modes)
+        if args.plot:
+            plot_branches(args.csv, args.plot)
 
 
 def branches(csv, modes):
@@ -402,6 +405,25 @@ def branches(csv, modes):
             t = difference[i] / (difference[i] - difference[i + 1])
             v = volumes[i] + t * (volumes[i + 1] - volumes[i])
             print("prolate and oblate energies cross at v = %.3f" % v)
+
+
+def plot_branches(csv, png):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    rows = [line.strip().split(",") for line in open(csv)][1:]
+    fig, ax = plt.subplots(figsize=(6, 4))
+    for branch in ("prolate", "oblate"):
+        v = [float(r[1]) for r in rows if r[0] == branch]
+        e = [float(r[2]) for r in rows if r[0] == branch]
+        ax.plot(v, e, "o-", ms=3, label=branch)
+    ax.axvline(0.652, color="gray", ls=":", label="v_po = 0.652 (SBL 1991)")
+    ax.set_xlabel("reduced volume v")
+    ax.set_ylabel("E_B / (8 pi kappa)")
+    ax.legend()
+    ax.grid(alpha=0.3)
+    fig.tight_layout()
+    fig.savefig(png, dpi=120)
 
 
 if __name__ == "__main__":
