@@ -83,15 +83,21 @@ namespace vesicle_iga
       void
       load(const Checkpoint &c, const std::string &prefix) override;
 
-      /// The extents of the zero level set through the centre.
+      /// The extents of the zero level set through the centre, from the
+      /// solution's natural coefficients (gathered on every rank).
       std::vector<double>
-      extents() const;
+      extents(const std::vector<double> &natural) const;
+      std::vector<double>
+      extents() const
+      {
+        return extents(gather_natural(model.get_dofs(), model.solution()));
+      }
 
       /// 2D: length, enclosed area and reduced area 4 pi A / L^2 of the
       /// longest closed piece of the zero level set (the sharp measures
       /// that the diffuse (E9) approximate; issue 16, item 1).
       std::array<double, 3>
-      zero_level_set_geometry() const;
+      zero_level_set_geometry(const std::vector<double> &natural) const;
 
       double max_constraint_error = 0, max_energy_increase = 0,
              max_lagrangian_increase = 0;
@@ -152,9 +158,8 @@ namespace vesicle_iga
 
     template <int dim>
     std::vector<double>
-    WillmoreMonitor<dim>::extents() const
+    WillmoreMonitor<dim>::extents(const std::vector<double> &c) const
     {
-      const auto c = gather_natural(model.get_dofs(), model.solution());
       std::vector<double> e;
       for (unsigned int d = 0; d < dim; ++d)
         e.push_back(
@@ -165,11 +170,11 @@ namespace vesicle_iga
 
     template <int dim>
     std::array<double, 3>
-    WillmoreMonitor<dim>::zero_level_set_geometry() const
+    WillmoreMonitor<dim>::zero_level_set_geometry(
+      const std::vector<double> &c) const
     {
       if constexpr (dim == 2)
         {
-          const auto c = gather_natural(model.get_dofs(), model.solution());
           for (const ZeroContour &piece :
                zero_contours(model.get_dofs().get_space(), c, 1, 0, 8))
             if (piece.closed)
@@ -212,10 +217,12 @@ namespace vesicle_iga
                              model.area_multiplier(),
                              model.volume_multiplier()})
         row.push_back(v);
-      for (const double e : extents())
+      // One gather of the solution for all level-set measures of the step.
+      const auto natural = gather_natural(model.get_dofs(), model.solution());
+      for (const double e : extents(natural))
         row.push_back(e);
       if (dim == 2)
-        for (const double g : zero_level_set_geometry())
+        for (const double g : zero_level_set_geometry(natural))
           row.push_back(g);
       const auto motion = model.interface_motion(info.dt);
       speed             = motion.speed;
@@ -228,12 +235,10 @@ namespace vesicle_iga
             row.push_back(material.to_eV(e));
           row.push_back(material.to_eV(f.energy));
           row.push_back(model.take_potential_iterations());
-          const auto x
-            = zero_crossings_along_axis(model.get_dofs().get_space(),
-                                        gather_natural(model.get_dofs(),
-                                                       model.solution()),
-                                        s.center,
-                                        material.direction());
+          const auto x = zero_crossings_along_axis(model.get_dofs().get_space(),
+                                                   natural,
+                                                   s.center,
+                                                   material.direction());
           row.push_back(x.size() >= 2 ? 0.5 * (x.front() + x.back()) : 0.);
         }
       progress << " E/kappa=" << f.energy / s.kappa

@@ -43,9 +43,7 @@
 
 #include <deal.II/base/quadrature_lib.h>
 
-#include <vesicle_iga/fields/natural_numbering.h>
 #include <vesicle_iga/kernel/system_assembler.h>
-#include <vesicle_iga/models/electric_potential.h>
 #include <vesicle_iga/parallel/patch_mesh.h>
 #include <vesicle_iga/physics/vesicle_shape.h>
 #include <vesicle_iga/terms/flexoelectric_energy.h>
@@ -54,6 +52,8 @@
 #include <fstream>
 #include <functional>
 #include <iomanip>
+
+#include "fixed_fields.h"
 
 using namespace vesicle_iga;
 using namespace dealii;
@@ -64,28 +64,6 @@ const char *
 check(const bool ok)
 {
   return ok ? ": yes\n" : ": NO\n";
-}
-
-// The spline interpolant (Greville points) of f, ghosted.
-template <int dim>
-TrilinosWrappers::MPI::Vector
-interpolate(const SplineDofHandler<dim>                     &dofs,
-            const SplineSpace<dim>                          &space,
-            const std::function<double(const Point<dim> &)> &f)
-{
-  std::vector<double> values(space.n_basis());
-  for (unsigned int i = 0; i < space.n_basis(); ++i)
-    values[i] = f(space.greville_point(i));
-  TrilinosWrappers::MPI::Vector owned(dofs.locally_owned_dofs(),
-                                      MPI_COMM_WORLD);
-  scatter_natural(dofs,
-                  interpolate_at_greville_points(space, values, 1),
-                  owned);
-  TrilinosWrappers::MPI::Vector ghosted(dofs.locally_owned_dofs(),
-                                        dofs.locally_relevant_dofs(),
-                                        MPI_COMM_WORLD);
-  ghosted = owned;
-  return ghosted;
 }
 
 // E_F of (E6) and the two measures of part B, S and max Pi, at phi, psi.
@@ -165,12 +143,14 @@ prescribed_energy(const double      h,
   VesicleShape<dim>           sphere;
   sphere.center = c;
   sphere.semi_axes.fill(R);
-  const auto phi = interpolate<dim>(dofs, space, [&](const Point<dim> &x) {
-    return std::tanh(sphere.signed_distance(x) / (std::sqrt(2.) * eps));
-  });
-  const auto psi = interpolate<dim>(dofs, space, [&](const Point<dim> &x) {
-    return a * x.norm_square() / 2 - E0 * x[1];
-  });
+  const auto phi
+    = ghosted_interpolant<dim>(dofs, space, [&](const Point<dim> &x) {
+        return std::tanh(sphere.signed_distance(x) / (std::sqrt(2.) * eps));
+      });
+  const auto psi
+    = ghosted_interpolant<dim>(dofs, space, [&](const Point<dim> &x) {
+        return a * x.norm_square() / 2 - E0 * x[1];
+      });
   ElectromechanicsMaterial material;
   FlexoelectricEnergy<dim> flexo(0,
                                  0,
@@ -273,18 +253,11 @@ membrane_discrete(const double eps,
   const SplineSpace<2>      space(kv);
   const PatchMesh<2>        mesh(MPI_COMM_WORLD, space, nullptr);
   const SplineDofHandler<2> dofs(mesh, space, 1);
-  ElectromechanicsMaterial  material;
-  material.field_strength = field_strength;
-  LinearSolverParameters solver;
-  solver.method    = "cg-mg";
-  solver.tolerance = 1e-13;
-  TimerOutput          timer(MPI_COMM_WORLD,
-                    out,
-                    TimerOutput::never,
-                    TimerOutput::wall_times);
-  const QGauss<1>      quadrature(6);
-  ElectricPotential<2> potential(dofs, material, quadrature, solver, timer);
-  const auto phi = interpolate<2>(dofs, space, [&](const Point<2> &x) {
+  PotentialProblem          problem(dofs, field_strength, 1e-13, out);
+  const auto               &material   = problem.material;
+  const auto               &quadrature = problem.quadrature;
+  auto                     &potential  = problem.potential;
+  const auto phi = ghosted_interpolant<2>(dofs, space, [&](const Point<2> &x) {
     return std::tanh(x[1] / (std::sqrt(2.) * eps));
   });
   potential.solve(phi);

@@ -52,6 +52,8 @@
 #include <fstream>
 #include <iomanip>
 
+#include "fixed_fields.h"
+
 using namespace vesicle_iga;
 using namespace dealii;
 
@@ -82,17 +84,10 @@ forces(const double h,
   const SplineSpace<2>      space(kv);
   const PatchMesh<2>        mesh(MPI_COMM_WORLD, space, nullptr);
   const SplineDofHandler<2> dofs(mesh, space, 1);
-  ElectromechanicsMaterial  material;
-  material.field_strength = field_strength;
-  LinearSolverParameters solver;
-  solver.method    = "cg-mg";
-  solver.tolerance = 1e-12;
-  TimerOutput          timer(MPI_COMM_WORLD,
-                    out,
-                    TimerOutput::never,
-                    TimerOutput::wall_times);
-  const QGauss<1>      quadrature(6);
-  ElectricPotential<2> potential(dofs, material, quadrature, solver, timer);
+  PotentialProblem          problem(dofs, field_strength, 1e-12, out);
+  const auto               &material   = problem.material;
+  const auto               &quadrature = problem.quadrature;
+  auto                     &potential  = problem.potential;
 
   BendingEnergy<2>               bending(0, 1., eps, 0.);
   FlexoelectricEnergy<2>         flexo(0,
@@ -130,14 +125,9 @@ forces(const double h,
     VesicleShape<2> ellipse;
     ellipse.semi_axes = {{6., 4.}};
     ellipse.center    = Point<2>(0, d);
-    TrilinosWrappers::MPI::Vector owned(dofs.locally_owned_dofs(),
-                                        MPI_COMM_WORLD);
-    scatter_natural(dofs, ellipse.phase_field(space, eps), owned);
-    TrilinosWrappers::MPI::Vector ghosted(dofs.locally_owned_dofs(),
-                                          dofs.locally_relevant_dofs(),
-                                          MPI_COMM_WORLD);
-    ghosted = owned;
-    return ghosted;
+    return ghosted_interpolant<2>(dofs, space, [&](const Point<2> &x) {
+      return std::tanh(ellipse.signed_distance(x) / (std::sqrt(2.) * eps));
+    });
   };
   const auto phi_0 = phase_field(0), phi_plus = phase_field(shift),
              phi_minus = phase_field(-shift);
