@@ -7,7 +7,7 @@
 // 4. the residual coefficients against the test functions, the Jacobian
 //    coefficients (with the time integrator's factors) against test and
 //    trial functions, block by block of components;
-// 5. scatter through the constraints.
+// 5. scatter through the constraints (ElementScatter).
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/work_stream.h>
@@ -15,6 +15,7 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
+#include <vesicle_iga/kernel/element_scatter.h>
 #include <vesicle_iga/kernel/system_assembler.h>
 #include <vesicle_iga/kernel/tensor_product_kernel.h>
 #include <vesicle_iga/spline/spline_cell_values.h>
@@ -809,18 +810,9 @@ namespace vesicle_iga
                            }))
           process(*face_plan, f);
     };
-    const auto copier = [&](const CopyData &copy) {
-      if (matrix && residual)
-        constraints.distribute_local_to_global(
-          copy.matrix, copy.rhs, copy.indices, *matrix, *residual);
-      else if (matrix)
-        constraints.distribute_local_to_global(copy.matrix,
-                                               copy.indices,
-                                               *matrix);
-      else
-        constraints.distribute_local_to_global(copy.rhs,
-                                               copy.indices,
-                                               *residual);
+    ElementScatter scatter(constraints, matrix, residual);
+    const auto     copier = [&](const CopyData &copy) {
+      scatter.add(copy.matrix, copy.rhs, copy.indices);
     };
     const auto &elements = dofs.get_mesh().locally_owned_elements();
     WorkStream::run(elements.begin(),

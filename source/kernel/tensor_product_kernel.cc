@@ -467,6 +467,203 @@ namespace vesicle_iga
           g = e;
         }
     }
+
+
+    /**
+     * The stages above with the univariate sizes fixed at compile time (NT
+     * test and NS trial functions and M points per direction, the same in
+     * every direction): the loops unroll and the partial sums of the last
+     * stage stay in registers. Same operations in the same order as the
+     * general stages, except that zero factors are not skipped.
+     */
+    template <int NT, int NS, int M>
+    struct FixedSize
+    {
+      static constexpr unsigned int nn = NT * NS;
+
+      /// T[o][k] += sum_q B[q][k] C[o + n_out q] (the first contraction).
+      template <unsigned int n_out>
+      static void
+      first(const double *B, const double *C, double *T)
+      {
+        for (unsigned int q = 0; q < M; ++q)
+          for (unsigned int o = 0; o < n_out; ++o)
+            {
+              const double  c = C[o + n_out * q];
+              double       *t = T + o * nn;
+              const double *b = B + q * nn;
+              for (unsigned int k = 0; k < nn; ++k)
+                t[k] += b[k] * c;
+            }
+      }
+
+      /// 3D: T2[q0][k nn + l] += sum_q1 B1[q1][k] T1[q0 + M q1][l].
+      static void
+      middle(const double *B1, const double *T1, double *T2)
+      {
+        for (unsigned int q0 = 0; q0 < M; ++q0)
+          for (unsigned int q1 = 0; q1 < M; ++q1)
+            {
+              const double *t1 = T1 + (q0 + M * q1) * nn;
+              const double *b  = B1 + q1 * nn;
+              double       *t2 = T2 + q0 * nn * nn;
+              for (unsigned int k = 0; k < nn; ++k)
+                {
+                  const double c   = b[k];
+                  double      *row = t2 + k * nn;
+                  for (unsigned int l = 0; l < nn; ++l)
+                    row[l] += c * t1[l];
+                }
+            }
+      }
+
+      /// A[(i0, I), (j0, J)] += sum_q0 B0[q0][i0 j0] T[q0][index(I, J)].
+      template <int dim, typename Index>
+      static void
+      last(const MatrixStage<dim> &m,
+           const double           *B0,
+           const double           *T,
+           const unsigned int      nI,
+           const unsigned int      nJ,
+           const std::size_t       stride,
+           const Index            &index)
+      {
+        for (unsigned int I = 0; I < nI; ++I)
+          for (unsigned int J = m.symmetric ? I : 0; J < nJ; ++J)
+            {
+              double            tmp[nn] = {};
+              const std::size_t IJ      = index(I, J);
+              for (unsigned int q = 0; q < M; ++q)
+                {
+                  const double  t = T[q * stride + IJ];
+                  const double *b = B0 + q * nn;
+                  for (unsigned int k = 0; k < nn; ++k)
+                    tmp[k] += b[k] * t;
+                }
+              for (unsigned int i0 = 0; i0 < NT; ++i0)
+                {
+                  double *row = m.A + (I * NT + i0) * m.row_stride + J * NS;
+                  for (unsigned int j0 = 0; j0 < NS; ++j0)
+                    row[j0] += tmp[i0 * NS + j0];
+                }
+              if (m.symmetric && J != I)
+                for (unsigned int i0 = 0; i0 < NT; ++i0)
+                  for (unsigned int j0 = 0; j0 < NS; ++j0)
+                    m.A[(J * NT + j0) * m.row_stride + I * NS + i0]
+                      += tmp[i0 * NS + j0];
+            }
+      }
+
+      static void
+      groups(const MatrixStage<2>                            &m,
+             const std::vector<TensorProductKernel<2>::Pair> &pairs,
+             const Key                                       &keys)
+      {
+        std::vector<double> &T1 = m.ws.stage[1];
+        for (std::size_t g = 0; g < pairs.size();)
+          {
+            const auto k0 = keys[g];
+            T1.assign(M * nn, 0.);
+            std::size_t e = g;
+            for (;
+                 e < pairs.size() && keys[e][0] == k0[0] && keys[e][1] == k0[1];
+                 ++e)
+              first<M>(
+                product<2>(m.test, m.trial, 1, keys[e][2], keys[e][3], m.ws),
+                pairs[e].coefficient,
+                T1.data());
+            last(m,
+                 product<2>(m.test, m.trial, 0, k0[0], k0[1], m.ws),
+                 T1.data(),
+                 NT,
+                 NS,
+                 nn,
+                 [](const unsigned int I, const unsigned int J) {
+                   return std::size_t(I) * NS + J;
+                 });
+            g = e;
+          }
+      }
+
+      static void
+      groups(const MatrixStage<3>                            &m,
+             const std::vector<TensorProductKernel<3>::Pair> &pairs,
+             const Key                                       &keys)
+      {
+        std::vector<double> &T1 = m.ws.stage[1], &T2 = m.ws.stage[2];
+        for (std::size_t g = 0; g < pairs.size();)
+          {
+            const auto k0 = keys[g];
+            T2.assign(M * nn * nn, 0.);
+            std::size_t e = g;
+            while (e < pairs.size() && keys[e][0] == k0[0]
+                   && keys[e][1] == k0[1])
+              {
+                const auto k1 = keys[e];
+                T1.assign(M * M * nn, 0.);
+                std::size_t h = e;
+                for (; h < pairs.size() && keys[h][0] == k0[0]
+                       && keys[h][1] == k0[1] && keys[h][2] == k1[2]
+                       && keys[h][3] == k1[3];
+                     ++h)
+                  first<M * M>(
+                    product<3>(
+                      m.test, m.trial, 2, keys[h][4], keys[h][5], m.ws),
+                    pairs[h].coefficient,
+                    T1.data());
+                middle(product<3>(m.test, m.trial, 1, k1[2], k1[3], m.ws),
+                       T1.data(),
+                       T2.data());
+                e = h;
+              }
+            last(m,
+                 product<3>(m.test, m.trial, 0, k0[0], k0[1], m.ws),
+                 T2.data(),
+                 NT * NT,
+                 NS * NS,
+                 nn * nn,
+                 [](const unsigned int I, const unsigned int J) {
+                   const unsigned int i1 = I % NT, i2 = I / NT;
+                   const unsigned int j1 = J % NS, j2 = J / NS;
+                   return std::size_t(i1 * NS + j1) * nn + i2 * NS + j2;
+                 });
+            g = e;
+          }
+      }
+    };
+
+
+    /// The fixed-size stages where the sizes are those of quadratic or
+    /// cubic spaces with p+1 or p+2 points (the same in every direction);
+    /// false where they are not.
+    template <int dim>
+    bool
+    fixed_size_groups(
+      const MatrixStage<dim>                                     &m,
+      const std::vector<typename TensorProductKernel<dim>::Pair> &pairs,
+      const Key                                                  &keys)
+    {
+      for (unsigned int d = 1; d < dim; ++d)
+        if (m.test.n_basis[d] != m.test.n_basis[0]
+            || m.trial.n_basis[d] != m.trial.n_basis[0]
+            || m.test.n_points[d] != m.test.n_points[0])
+          return false;
+      const unsigned int nt = m.test.n_basis[0], ns = m.trial.n_basis[0];
+      const unsigned int q = m.test.n_points[0];
+      if (nt != ns)
+        return false;
+      if (nt == 3 && q == 3)
+        FixedSize<3, 3, 3>::groups(m, pairs, keys);
+      else if (nt == 3 && q == 4)
+        FixedSize<3, 3, 4>::groups(m, pairs, keys);
+      else if (nt == 4 && q == 4)
+        FixedSize<4, 4, 4>::groups(m, pairs, keys);
+      else if (nt == 4 && q == 5)
+        FixedSize<4, 4, 5>::groups(m, pairs, keys);
+      else
+        return false;
+      return true;
+    }
   } // namespace
 
 
@@ -506,9 +703,9 @@ namespace vesicle_iga
     keys.resize(pairs.size());
     for (std::size_t k = 0; k < pairs.size(); ++k)
       keys[k] = key(pairs[k]);
-    matrix_groups(MatrixStage<dim>{test, trial, symmetric, A, row_stride, ws},
-                  pairs,
-                  keys);
+    const MatrixStage<dim> stage{test, trial, symmetric, A, row_stride, ws};
+    if (!fixed_size_groups<dim>(stage, pairs, keys))
+      matrix_groups(stage, pairs, keys);
   }
 
   template class TensorProductKernel<2>;

@@ -1,6 +1,9 @@
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/tensor.h>
 
+#include <vesicle_iga/kernel/derivative.h>
+#include <vesicle_iga/kernel/tensor_product_kernel.h>
 #include <vesicle_iga/postprocess/field_integrals.h>
 
 #include <cmath>
@@ -48,26 +51,69 @@ namespace vesicle_iga
                      const unsigned int                   order,
                      const TrilinosWrappers::MPI::Vector &solution)
   {
-    std::vector<double> squares = integrate_field<dim>(
-      dof_handler,
-      nullptr,
-      quadrature_1d,
-      order,
-      solution,
-      order + 1,
-      [&](const SplineCellValues<dim>            &v,
-          const unsigned int                      q,
-          const std::vector<std::vector<double>> &c,
-          std::vector<double>                    &sums) {
-        const Point<dim> &x = v.quadrature_point(q);
-        sums[0] += std::pow(v.value(c[0], q) - exact.value(x), 2) * v.JxW(q);
-        sums[1]
-          += (v.gradient(c[0], q) - exact.gradient(x)).norm_square() * v.JxW(q);
-        if (order >= 2)
-          sums[2] += (v.hessian(c[0], q) - Tensor<2, dim>(exact.hessian(x)))
-                       .norm_square()
-                     * v.JxW(q);
-      });
+    // The derivatives at all points of an element by sum factorisation
+    // (the spaces are boxes: no geometry), as the assembly evaluates them;
+    // full basis tables would cost (p+1)^dim per point and derivative.
+    using D = Derivative<dim>;
+    std::vector<unsigned int> derivatives{D::value};
+    for (unsigned int a = 0; a < dim && order >= 1; ++a)
+      derivatives.push_back(D::gradient(a));
+    for (unsigned int a = 0; a < dim && order >= 2; ++a)
+      for (unsigned int b = a; b < dim; ++b)
+        derivatives.push_back(D::hessian(a, b));
+    SplineCellValues<dim> values(
+      dof_handler.get_space(), nullptr, quadrature_1d, order, false);
+    std::vector<double>                          at_points;
+    std::vector<double *>                        out(derivatives.size());
+    typename TensorProductKernel<dim>::Workspace workspace;
+    std::vector<double>                          JxW;
+    std::vector<std::vector<double>>             c;
+    std::vector<double>                          squares(order + 1, 0.);
+    for (const unsigned int e : dof_handler.get_mesh().locally_owned_elements())
+      {
+        values.reinit(e);
+        get_element_coefficients(dof_handler, solution, e, c);
+        const auto        &f   = values.tensor_product_factors();
+        const unsigned int n_q = f.n_quadrature_points();
+        at_points.resize(derivatives.size() * n_q);
+        for (unsigned int k = 0; k < derivatives.size(); ++k)
+          out[k] = &at_points[k * n_q];
+        TensorProductKernel<dim>::evaluate(
+          f, c[0].data(), derivatives, out.data(), workspace);
+        TensorProductKernel<dim>::weights(f, JxW);
+        for (unsigned int q = 0; q < n_q; ++q)
+          {
+            Point<dim>   x;
+            unsigned int r = q;
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                x[d] = f.points[d][r % f.n_points[d]];
+                r /= f.n_points[d];
+              }
+            squares[0] += std::pow(at_points[q] - exact.value(x), 2) * JxW[q];
+            if (order >= 1)
+              {
+                const Tensor<1, dim> g = exact.gradient(x);
+                for (unsigned int a = 0; a < dim; ++a)
+                  squares[1] += std::pow(at_points[(1 + a) * n_q + q] - g[a], 2)
+                                * JxW[q];
+              }
+            if (order >= 2)
+              {
+                const SymmetricTensor<2, dim> H = exact.hessian(x);
+                unsigned int                  k = 1 + dim;
+                for (unsigned int a = 0; a < dim; ++a)
+                  for (unsigned int b = a; b < dim; ++b, ++k)
+                    squares[2]
+                      += (a == b ? 1. : 2.)
+                         * std::pow(at_points[k * n_q + q] - H[a][b], 2)
+                         * JxW[q];
+              }
+          }
+      }
+    Utilities::MPI::sum(squares,
+                        dof_handler.get_mesh().get_communicator(),
+                        squares);
     for (double &s : squares)
       s = std::sqrt(s);
     return squares;

@@ -19,6 +19,7 @@ namespace vesicle_iga
         n_functions *= kv[d].n_basis();
         n_elems *= kv[d].n_elements();
         n_per_element *= kv[d].degree() + 1;
+        greville[d] = kv[d].greville_points();
       }
   }
 
@@ -138,7 +139,7 @@ namespace vesicle_iga
     const auto m = basis_multi_index(i);
     Point<dim> x;
     for (unsigned int d = 0; d < dim; ++d)
-      x[d] = kv[d].greville_points()[m[d]];
+      x[d] = greville[d][m[d]];
     return x;
   }
 

@@ -7,8 +7,11 @@
 //  - integrate: sum_q sum_a D^a N_i(q) c_a(q) with random c for all a;
 //  - integrate_matrix: sum_q D^a N_i C_ab(q) D^b M_j with random C for
 //    random pairs (a, b), with N and M of different spaces (degree p and
-//    p + 1 on the same breakpoints), and a symmetric set on one space
-//    with the symmetric shortcut.
+//    p + 1 on the same breakpoints), the same on one space, and a
+//    symmetric set on one space with the symmetric shortcut.
+// With p + 1 and p + 2 Gauss points per direction: on one space these are
+// the sizes of the kernel's fixed-size (unrolled) stages, between two
+// spaces and on faces those of the general stages.
 // Both sides compute the same sums in another order: they must agree to
 // round-off ("ok" below 1e-12 relative to the largest entry). A wrong
 // factor of any derivative, a wrong index map between the two spaces or
@@ -58,7 +61,10 @@ verdict(const double difference, const double scale)
 
 template <int dim>
 void
-check(const unsigned int p, const unsigned int element_choice, const int face)
+check(const unsigned int p,
+      const unsigned int element_choice,
+      const int          face,
+      const unsigned int n_points)
 {
   using K = TensorProductKernel<dim>;
   using D = Derivative<dim>;
@@ -72,8 +78,8 @@ check(const unsigned int p, const unsigned int element_choice, const int face)
       kv2[d] = KnotVector(p + 1, z);
     }
   const SplineSpace<dim> space(kv), space2(kv2);
-  SplineCellValues<dim>  v(space, nullptr, QGauss<1>(p + 2), 3);
-  SplineCellValues<dim>  w(space2, nullptr, QGauss<1>(p + 2), 3);
+  SplineCellValues<dim>  v(space, nullptr, QGauss<1>(n_points), 3);
+  SplineCellValues<dim>  w(space2, nullptr, QGauss<1>(n_points), 3);
   const unsigned int     e = element_choice == 0 ? 0 : space.n_elements() / 2;
   if (face < 0)
     {
@@ -113,7 +119,7 @@ check(const unsigned int p, const unsigned int element_choice, const int face)
         diff  = std::max(diff, std::abs(s - values[a][q]));
         scale = std::max(scale, std::abs(s));
       }
-  out << dim << "D p=" << p << " element " << e
+  out << dim << "D p=" << p << " q=" << n_points << " element " << e
       << (face >= 0 ? " face " + std::to_string(face) : std::string())
       << ": evaluate " << verdict(diff, scale);
 
@@ -170,6 +176,24 @@ check(const unsigned int p, const unsigned int element_choice, const int face)
       }
   out << ", matrix " << verdict(diff, scale);
 
+  // the same pairs on one space
+  pairs = reference;
+  std::vector<double> B(n * n, 0.);
+  K::integrate_matrix(f, f, pairs, false, B.data(), n, ws);
+  diff = scale = 0;
+  for (unsigned int i = 0; i < n; ++i)
+    for (unsigned int j = 0; j < n; ++j)
+      {
+        double s = 0;
+        for (const auto &pair : reference)
+          for (unsigned int q = 0; q < nq; ++q)
+            s += derivative(v, pair.test, i, q) * pair.coefficient[q]
+                 * derivative(v, pair.trial, j, q);
+        diff  = std::max(diff, std::abs(s - B[i * n + j]));
+        scale = std::max(scale, std::abs(s));
+      }
+  out << ", one-space matrix " << verdict(diff, scale);
+
   // symmetric set on one space: (a, b, C) and (b, a, C)
   pairs.clear();
   for (unsigned int k = 0; k < 8; ++k)
@@ -201,12 +225,13 @@ int
 main()
 {
   for (const unsigned int p : {2u, 3u})
-    for (const unsigned int e : {0u, 1u})
-      {
-        check<2>(p, e, -1);
-        check<3>(p, e, -1);
-      }
-  check<2>(3, 0, 1);
-  check<3>(2, 0, 4);
-  check<3>(3, 0, 0);
+    for (const unsigned int extra : {1u, 2u})
+      for (const unsigned int e : {0u, 1u})
+        {
+          check<2>(p, e, -1, p + extra);
+          check<3>(p, e, -1, p + extra);
+        }
+  check<2>(3, 0, 1, 5);
+  check<3>(2, 0, 4, 4);
+  check<3>(3, 0, 0, 5);
 }

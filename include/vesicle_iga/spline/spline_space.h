@@ -117,9 +117,12 @@ namespace vesicle_iga
 
   private:
     std::array<KnotVector, dim> kv;
-    unsigned int                n_functions;
-    unsigned int                n_elems;
-    unsigned int                n_per_element;
+    /// The Greville abscissae of every direction (greville_point() is
+    /// called once per basis function by the set-up of every field).
+    std::array<std::vector<double>, dim> greville;
+    unsigned int                         n_functions;
+    unsigned int                         n_elems;
+    unsigned int                         n_per_element;
   };
 
   /**
