@@ -11,7 +11,8 @@ namespace vesicle_iga
   void
   ConvergenceParameters::declare(ParameterHandler  &prm,
                                  const std::string &default_degrees,
-                                 const std::string &default_refinements)
+                                 const std::string &default_refinements,
+                                 const std::string &default_extra_points)
   {
     prm.declare_entry("Degrees",
                       default_degrees,
@@ -29,9 +30,10 @@ namespace vesicle_iga
                       "Number of uniform h-refinements (knot insertion at "
                       "element midpoints) after the coarsest mesh.");
     prm.declare_entry("Extra quadrature points",
-                      "1",
+                      default_extra_points,
                       Patterns::Integer(0, 6),
-                      "Gauss points per direction beyond p+1 (assembly); the "
+                      "Gauss points per direction beyond p+1 (assembly; on "
+                      "boxes p+1 keeps the rates, doc/verification.md); the "
                       "error norms use two more than that.");
     prm.declare_entry("Write VTU",
                       "true",

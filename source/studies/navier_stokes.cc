@@ -519,7 +519,7 @@ namespace vesicle_iga
       [](ParameterHandler &prm) {
         prm.enter_subsection(section);
         BoxSpaceParameters::declare(prm, "0", "1", "8");
-        ConvergenceParameters::declare(prm, "2", "0");
+        ConvergenceParameters::declare(prm, "2", "0", "1");
         LinearSolverParameters::declare_flow(prm, "fgmres-block", "1e-10");
         prm.declare_entry("Reynolds number",
                           "100",

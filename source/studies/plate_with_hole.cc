@@ -344,7 +344,7 @@ namespace vesicle_iga
             "solution for p-elevated and h-refined spaces.",
             [](ParameterHandler &prm) {
               prm.enter_subsection(section);
-              ConvergenceParameters::declare(prm, "2,3,4,5,6", "5");
+              ConvergenceParameters::declare(prm, "2,3,4,5,6", "5", "1");
               LinearSolverParameters::declare(prm, "direct");
               prm.declare_entry("Young modulus",
                                 "1e5",

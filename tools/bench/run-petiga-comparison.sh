@@ -65,6 +65,18 @@ EOF
     'BEGIN {print j / c, (j + r) / it}'
 }
 
+flow_rows() { # case code elements command... (the command prints "call newton")
+  local c=$1 code=$2 n=$3 x y
+  shift 3
+  local calls=() iterations=()
+  for r in $(seq $R); do
+    read -r x y < <("$@")
+    calls+=($x) iterations+=($y)
+  done
+  row $c $code "jacobian call" $n "${calls[@]}"
+  row $c $code "newton iteration" $n "${iterations[@]}"
+}
+
 echo "case,code,quantity,median_s,elements,us_per_element"
 for b in poisson-3d-p3:32768 poisson-3d-p2:32768 poisson-2d-p3:65536 poisson-2d-p2:65536; do
   name=${b%%:*} n=${b##*:}
@@ -77,24 +89,13 @@ for b in poisson-3d-p3:32768 poisson-3d-p2:32768 poisson-2d-p3:65536 poisson-2d-
   [ $name = poisson-3d-p3 ] && row $name vesicle-iga run $n "${t[@]}"
 done
 channel='subsection Navier-Stokes
+  set Quadrature points = 3
   subsection Time stepping
     set Max steps = 2
   end
 end'
-c=() i=()
-for r in $(seq $R); do
-  read -r x y < <(ours_flow channel-3d "$channel")
-  c+=($x) i+=($y)
-done
-row rbvms-3d-p2 vesicle-iga "jacobian call" 4096 "${c[@]}"
-row rbvms-3d-p2 vesicle-iga "newton iteration" 4096 "${i[@]}"
-c=() i=()
-for r in $(seq $R); do
-  read -r x y < <(ours_flow phase-field-2d "")
-  c+=($x) i+=($y)
-done
-row phase-field-2d-p2 vesicle-iga "jacobian call" 16384 "${c[@]}"
-row phase-field-2d-p2 vesicle-iga "newton iteration" 16384 "${i[@]}"
+flow_rows rbvms-3d-p2 vesicle-iga 4096 ours_flow channel-3d "$channel"
+flow_rows phase-field-2d-p2 vesicle-iga 16384 ours_flow phase-field-2d ""
 
 # --- PetIGA --------------------------------------------------------------
 [ -n "${PETIGA_DIR:-}" ] || exit 0
@@ -127,19 +128,8 @@ petiga_flow() { # command... -> "s_per_call s_per_newton"
   awk -v nj=$nj -v tj=$tj -v nf=$nf -v tf=$tf \
     'BEGIN {print (tj + tf * nj / nf) / nj, (tj + tf) / nj}'
 }
-c=() i=()
-for r in $(seq $R); do
-  read -r x y < <(petiga_flow $demo/NavierStokesVMS -N 16 -p 2 -C 1 \
-    -iga_quadrature 3 -ts_max_steps 2 -ksp_type fgmres -pc_type asm)
-  c+=($x) i+=($y)
-done
-row rbvms-3d-p2 PetIGA "jacobian call" 4096 "${c[@]}"
-row rbvms-3d-p2 PetIGA "newton iteration" 4096 "${i[@]}"
-c=() i=()
-for r in $(seq $R); do
-  read -r x y < <(petiga_flow $demo/CahnHilliard2D -N 128 -p 2 -k 1 \
-    -iga_quadrature 3 -ts_max_steps 10 -ksp_type gmres -pc_type asm)
-  c+=($x) i+=($y)
-done
-row phase-field-2d-p2 PetIGA "jacobian call" 16384 "${c[@]}"
-row phase-field-2d-p2 PetIGA "newton iteration" 16384 "${i[@]}"
+flow_rows rbvms-3d-p2 PetIGA 4096 petiga_flow $demo/NavierStokesVMS -N 16 \
+  -p 2 -C 1 -iga_quadrature 3 -ts_max_steps 2 -ksp_type fgmres -pc_type asm
+flow_rows phase-field-2d-p2 PetIGA 16384 petiga_flow $demo/CahnHilliard2D \
+  -N 128 -p 2 -k 1 -iga_quadrature 3 -ts_max_steps 10 -ksp_type gmres \
+  -pc_type asm

@@ -18,10 +18,13 @@ namespace vesicle_iga
     unsigned int              extra_quadrature_points;
     bool                      write_vtu;
 
+    /// @p default_extra_points: Gauss points beyond p+1 by default (0 on
+    /// boxes, where p+1 keeps the rates; NURBS integrands are rational).
     static void
     declare(dealii::ParameterHandler &prm,
             const std::string        &default_degrees,
-            const std::string        &default_refinements);
+            const std::string        &default_refinements,
+            const std::string        &default_extra_points = "0");
     /// @p min_continuity: the smoothness the equation needs (1 for
     /// fourth-order problems in primal form).
     void
