@@ -113,6 +113,9 @@ namespace vesicle_iga
       if (!constrained[i])
         add_row(local_matrix, indices, i);
 
+    if (column_order.size() == n)
+      return true; // nothing constrained: no diagonal to set
+
     // The diagonal of a constrained row, as AffineConstraints sets it: the
     // element's own diagonal entry, or the mean absolute diagonal.
     double mean_diagonal = 0;
