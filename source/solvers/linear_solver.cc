@@ -74,6 +74,13 @@ namespace vesicle_iga
     prm.enter_subsection("Linear solver");
     parse_krylov_entries(prm, *this);
     multigrid.parse(prm);
+    // CG needs a symmetric preconditioner; the restricted Schwarz smoother
+    // makes the V-cycle non-symmetric.
+    check_input(method != "cg-mg" || multigrid.smoother != "schwarz-ilu",
+                "Linear solver/Multigrid/Smoother",
+                multigrid.smoother,
+                "a symmetric smoother (ssor, chebyshev, ilu) with Method = "
+                "cg-mg, or Method = gmres-mg");
     prm.leave_subsection();
   }
 
@@ -92,19 +99,19 @@ namespace vesicle_iga
       "coarsest level; "
       "mesh-independent counts) or amg (Trilinos ML; the count grows "
       "under refinement on spline spaces, doc/flow.md).");
-    prm.declare_entry("Velocity sweeps",
-                      "3",
-                      Patterns::Integer(1),
-                      "Smoother sweeps (ssor, ilu) or Chebyshev degree of "
-                      "the V-cycle on the velocity block (Method = "
-                      "fgmres-block).");
+    prm.declare_entry(
+      "Velocity sweeps",
+      "3",
+      Patterns::Integer(1),
+      "Smoother sweeps (ssor, ilu, schwarz-ilu) or Chebyshev degree of "
+      "the V-cycle on the velocity block (Method = "
+      "fgmres-block).");
     prm.declare_entry("Velocity smoother",
                       "chebyshev",
-                      Patterns::Selection("ssor|chebyshev|ilu"),
-                      "Smoother of the velocity spline multigrid: ssor "
-                      "(symmetric Gauss-Seidel per rank), chebyshev "
-                      "(polynomial of degree 'Velocity sweeps' in the "
-                      "Jacobi-scaled matrix) or ilu (ILU(0) per rank).");
+                      Patterns::Selection(
+                        SplineMultigridParameters::smoother_names()),
+                      "Smoother of the velocity spline multigrid: "
+                        + SplineMultigridParameters::smoother_documentation());
     prm.declare_entry("Velocity coarse size",
                       "0",
                       Patterns::Integer(0),

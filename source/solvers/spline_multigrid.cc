@@ -5,6 +5,7 @@
 #include <deal.II/lac/trilinos_precondition.h>
 #include <deal.II/lac/trilinos_solver.h>
 
+#include <vesicle_iga/solvers/restricted_schwarz_ilu.h>
 #include <vesicle_iga/solvers/spline_multigrid.h>
 
 #include <sstream>
@@ -12,6 +13,27 @@
 namespace vesicle_iga
 {
   using namespace dealii;
+
+  const char *
+  SplineMultigridParameters::smoother_names()
+  {
+    return "ssor|chebyshev|ilu|schwarz-ilu";
+  }
+
+
+  std::string
+  SplineMultigridParameters::smoother_documentation()
+  {
+    return "ssor (symmetric Gauss-Seidel on each rank), chebyshev (a "
+           "polynomial of degree 'Sweeps' in the Jacobi-scaled matrix), "
+           "ilu (ILU(0) on each rank: the strongest on one rank, but the "
+           "Krylov count grows with the ranks) or schwarz-ilu (ILU(0) on "
+           "each rank's unknowns extended by 'Overlap' layers of matrix "
+           "neighbours, restricted additive Schwarz: ILU(0) on one rank, "
+           "counts nearly independent of the ranks; not symmetric, so not "
+           "with CG).";
+  }
+
 
   void
   SplineMultigridParameters::declare(ParameterHandler  &prm,
@@ -21,16 +43,14 @@ namespace vesicle_iga
     prm.enter_subsection("Multigrid");
     prm.declare_entry("Smoother",
                       default_smoother,
-                      Patterns::Selection("ssor|chebyshev|ilu"),
-                      "Smoother on every level but the coarsest: ssor "
-                      "(symmetric Gauss-Seidel on each rank), chebyshev "
-                      "(degree 'Sweeps' polynomial in the Jacobi-scaled "
-                      "matrix) or ilu (ILU(0) on each rank).");
+                      Patterns::Selection(smoother_names()),
+                      "Smoother on every level but the coarsest: "
+                        + smoother_documentation());
     prm.declare_entry("Sweeps",
                       default_sweeps,
                       Patterns::Integer(1, 20),
-                      "Pre- and post-smoothing sweeps (ssor), or the "
-                      "Chebyshev degree.");
+                      "Pre- and post-smoothing sweeps (ssor, ilu, "
+                      "schwarz-ilu), or the Chebyshev degree.");
     prm.declare_entry("Coarse size",
                       "0",
                       Patterns::Integer(0),
@@ -42,6 +62,11 @@ namespace vesicle_iga
                       "1.0",
                       Patterns::Double(0.1, 1.9),
                       "Relaxation factor omega of the SSOR smoother.");
+    prm.declare_entry("Overlap",
+                      "1",
+                      Patterns::Integer(0, 4),
+                      "Smoother schwarz-ilu: layers of matrix neighbours "
+                      "added to each rank's unknowns (0: the same as ilu).");
     prm.leave_subsection();
   }
 
@@ -54,6 +79,7 @@ namespace vesicle_iga
     sweeps          = prm.get_integer("Sweeps");
     coarse_size     = prm.get_integer("Coarse size");
     ssor_relaxation = prm.get_double("SSOR relaxation");
+    overlap         = prm.get_integer("Overlap");
     prm.leave_subsection();
   }
 
@@ -68,6 +94,9 @@ namespace vesicle_iga
     /// Level unknown of each natural basis index (invalid: not kept).
     std::vector<types::global_dof_index> index;
     types::global_dof_index              n_unknowns = 0;
+    /// The natural index of each level unknown (inverse of index): the
+    /// order in which the schwarz-ilu smoother factors.
+    std::vector<types::global_dof_index> natural;
     IndexSet                             owned;
     /// From the next coarser level to this one (empty on level 0).
     TrilinosWrappers::SparseMatrix                      prolongation;
@@ -289,6 +318,10 @@ namespace vesicle_iga
       levels.push_back(std::move(*it));
     for (auto &l : levels)
       {
+        l->natural.assign(l->n_unknowns, numbers::invalid_dof_index);
+        for (unsigned int I = 0; I < l->index.size(); ++I)
+          if (l->index[I] != numbers::invalid_dof_index)
+            l->natural[l->index[I]] = I;
         l->x.reinit(l->owned, communicator);
         l->b.reinit(l->owned, communicator);
         l->r.reinit(l->owned, communicator);
@@ -323,6 +356,16 @@ namespace vesicle_iga
             s->initialize(*L.matrix,
                           TrilinosWrappers::PreconditionSSOR::AdditionalData(
                             prm.ssor_relaxation));
+            L.smoother = std::move(s);
+          }
+        else if (prm.smoother == "schwarz-ilu")
+          {
+            auto s = std::make_unique<RestrictedSchwarzILU>();
+            s->initialize(*L.matrix,
+                          prm.overlap,
+                          [&L](const types::global_dof_index g) {
+                            return L.natural[g];
+                          });
             L.smoother = std::move(s);
           }
         else if (prm.smoother == "ilu")

@@ -1,6 +1,7 @@
 // Block preconditioner of the coupled vesicle-flow tangent (spec Part H).
 // See the header and doc/hydrodynamics.md ("Linear solver").
 
+#include <vesicle_iga/solvers/spline_multigrid.h>
 #include <vesicle_iga/solvers/vesicle_block_preconditioner.h>
 
 #include <sstream>
@@ -21,8 +22,9 @@ namespace vesicle_iga
       "'Phase field smoother') or Trilinos ML AMG.");
     prm.declare_entry("Phase field smoother",
                       "ssor",
-                      Selection("ssor|chebyshev|ilu"),
-                      "Smoother of the phase-field spline multigrid.");
+                      Selection(SplineMultigridParameters::smoother_names()),
+                      "Smoother of the phase-field spline multigrid: "
+                        + SplineMultigridParameters::smoother_documentation());
     prm.declare_entry("Phase field sweeps",
                       "2",
                       Integer(1),

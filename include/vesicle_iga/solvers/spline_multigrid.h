@@ -39,6 +39,15 @@ namespace vesicle_iga
     unsigned int sweeps          = 2;
     unsigned int coarse_size     = 4000;
     double       ssor_relaxation = 1.0;
+    /// Layers of matrix neighbours added to each rank's rows (schwarz-ilu).
+    unsigned int overlap = 1;
+
+    /// The smoother names, for Patterns::Selection wherever a spline
+    /// multigrid is configured, and what each means.
+    static const char *
+    smoother_names();
+    static std::string
+    smoother_documentation();
 
     static void
     declare(dealii::ParameterHandler &prm,
@@ -54,8 +63,10 @@ namespace vesicle_iga
    * other breakpoint per direction, the prolongation is the exact knot
    * insertion operator (Kronecker product of univariate matrices), the
    * level matrices are the Galerkin products A_{l-1} = P^T A_l P, the
-   * smoother is processor-local symmetric Gauss-Seidel (SSOR) or Chebyshev,
-   * and the coarsest level is solved by Amesos KLU. One V-cycle is the
+   * smoother is processor-local symmetric Gauss-Seidel (SSOR), Chebyshev,
+   * ILU(0) per rank or restricted additive Schwarz with ILU(0) subdomain
+   * solves (RestrictedSchwarzILU), and the coarsest level is solved by
+   * Amesos KLU. One V-cycle is the
    * preconditioner.
    *
    * Why: Krylov methods with ILU or algebraic multigrid need hundreds of
