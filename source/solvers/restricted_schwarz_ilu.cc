@@ -275,10 +275,6 @@ namespace vesicle_iga
   };
 
 
-  RestrictedSchwarzILU::RestrictedSchwarzILU()  = default;
-  RestrictedSchwarzILU::~RestrictedSchwarzILU() = default;
-
-
   void
   RestrictedSchwarzILU::initialize(
     const dealii::TrilinosWrappers::SparseMatrix &matrix,

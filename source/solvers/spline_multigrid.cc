@@ -28,8 +28,9 @@ namespace vesicle_iga
            "polynomial of degree 'Sweeps' in the Jacobi-scaled matrix), "
            "ilu (ILU(0) on each rank: the strongest on one rank, but the "
            "Krylov count grows with the ranks) or schwarz-ilu (ILU(0) on "
-           "each rank's unknowns extended by 'Overlap' layers of matrix "
-           "neighbours, restricted additive Schwarz: ILU(0) on one rank, "
+           "each rank's unknowns extended by layers of matrix neighbours "
+           "('Overlap' where declared, else one), restricted additive "
+           "Schwarz: ILU(0) on one rank, "
            "counts nearly independent of the ranks; not symmetric, so not "
            "with CG).";
   }

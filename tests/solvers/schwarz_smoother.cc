@@ -35,6 +35,8 @@
 #include <fstream>
 #include <iostream>
 
+#include "unit_box_problem.h"
+
 using namespace vesicle_iga;
 using namespace dealii;
 
@@ -50,21 +52,12 @@ template <int dim>
 Solve
 solve(const MPI_Comm comm, const unsigned int n, const std::string &smoother)
 {
-  const unsigned int          p = 3;
-  std::array<KnotVector, dim> kv;
-  for (unsigned int d = 0; d < dim; ++d)
-    kv[d] = KnotVector::uniform(p, n, 0., 1.);
-  StationaryProblem<dim>       problem(comm, SplineSpace<dim>(kv), nullptr, 1);
-  const BoundarySelection<dim> all("all", "boundary");
+  const unsigned int p       = 3;
+  const auto         owner   = unit_box_problem<dim>(comm, p, n);
+  auto              &problem = *owner;
+  add_homogeneous_clamped_constraints(problem);
   const Functions::ConstantFunction<dim> one(1.);
-  const Functions::ZeroFunction<dim>     zero;
-  add_clamped_constraints<dim>(
-    problem.dofs(),
-    all,
-    zero,
-    [](const Point<dim> &, const Tensor<1, dim> &) { return 0.; },
-    problem.constraints());
-  LinearSolverParameters solver;
+  LinearSolverParameters                 solver;
   solver.method             = "gmres-mg";
   solver.tolerance          = 1e-8;
   solver.multigrid.smoother = smoother;

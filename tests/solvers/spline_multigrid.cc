@@ -26,6 +26,8 @@
 #include <cmath>
 #include <fstream>
 
+#include "unit_box_problem.h"
+
 using namespace vesicle_iga;
 using namespace dealii;
 
@@ -70,21 +72,14 @@ template <int dim>
 void
 solve(const std::string &problem, const unsigned int n)
 {
-  const unsigned int          p = 3;
-  std::array<KnotVector, dim> kv;
-  for (unsigned int d = 0; d < dim; ++d)
-    kv[d] = KnotVector::uniform(p, n, 0., 1.);
-  StationaryProblem<dim> lsp(MPI_COMM_WORLD, SplineSpace<dim>(kv), nullptr, 1);
+  const unsigned int p     = 3;
+  const auto         owner = unit_box_problem<dim>(MPI_COMM_WORLD, p, n);
+  auto              &lsp   = *owner;
   const BoundarySelection<dim>           all("all", "boundary");
   const Functions::ConstantFunction<dim> one(1.);
   const Functions::ZeroFunction<dim>     zero;
   if (problem == "biharmonic")
-    add_clamped_constraints<dim>(
-      lsp.dofs(),
-      all,
-      zero,
-      [](const Point<dim> &, const Tensor<1, dim> &) { return 0.; },
-      lsp.constraints());
+    add_homogeneous_clamped_constraints(lsp);
   else
     add_strong_dirichlet_constraints<dim>(
       lsp.dofs(), nullptr, all, zero, {true}, lsp.constraints());

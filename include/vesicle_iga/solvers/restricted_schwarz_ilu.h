@@ -38,9 +38,6 @@ namespace vesicle_iga
   class RestrictedSchwarzILU : public dealii::TrilinosWrappers::PreconditionBase
   {
   public:
-    RestrictedSchwarzILU();
-    ~RestrictedSchwarzILU() override;
-
     /// @p natural_index maps a global row of @p matrix to its sort key.
     void
     initialize(const dealii::TrilinosWrappers::SparseMatrix &matrix,
