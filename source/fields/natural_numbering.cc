@@ -1,10 +1,43 @@
 #include <deal.II/base/index_set.h>
+#include <deal.II/base/mpi.h>
 
 #include <vesicle_iga/fields/natural_numbering.h>
+
+#include <Epetra_Import.h>
 
 namespace vesicle_iga
 {
   using namespace dealii;
+
+  namespace
+  {
+    /// A vector in the numbering of @p dofs whose entries all live on rank 0.
+    template <int dim>
+    TrilinosWrappers::MPI::Vector
+    vector_on_rank_0(const SplineDofHandler<dim> &dofs)
+    {
+      const MPI_Comm comm = dofs.get_mesh().get_communicator();
+      IndexSet       all(dofs.n_dofs());
+      if (Utilities::MPI::this_mpi_process(comm) == 0)
+        all.add_range(0, dofs.n_dofs());
+      return TrilinosWrappers::MPI::Vector(all, comm);
+    }
+
+    /// target = source through Epetra's import between their two maps.
+    void
+    import(const TrilinosWrappers::MPI::Vector &source,
+           TrilinosWrappers::MPI::Vector       &target)
+    {
+      const Epetra_Import importer(target.trilinos_partitioner(),
+                                   source.trilinos_partitioner());
+      const int           error
+        = target.trilinos_vector().Import(source.trilinos_vector(),
+                                          importer,
+                                          Insert);
+      AssertThrow(error == 0, ExcTrilinosError(error));
+    }
+  } // namespace
+
 
   template <int dim>
   void
@@ -22,13 +55,25 @@ namespace vesicle_iga
 
 
   template <int dim>
-  std::vector<double>
-  gather_natural(const SplineDofHandler<dim>         &dofs,
-                 const TrilinosWrappers::MPI::Vector &v)
+  void
+  scatter_natural_from_rank_0(const SplineDofHandler<dim>   &dofs,
+                              const std::vector<double>     &natural,
+                              TrilinosWrappers::MPI::Vector &owned)
   {
-    TrilinosWrappers::MPI::Vector all(dofs.locally_owned_dofs(),
-                                      complete_index_set(dofs.n_dofs()),
-                                      dofs.get_mesh().get_communicator());
+    TrilinosWrappers::MPI::Vector on_rank_0 = vector_on_rank_0(dofs);
+    const unsigned int            nc        = dofs.n_components();
+    for (unsigned int i = 0; i < natural.size(); ++i)
+      on_rank_0[dofs.dof_index(i / nc, i % nc)] = natural[i];
+    on_rank_0.compress(VectorOperation::insert);
+    import(on_rank_0, owned);
+  }
+
+
+  template <int dim>
+  std::vector<double>
+  gather_natural_on_rank_0(const SplineDofHandler<dim>         &dofs,
+                           const TrilinosWrappers::MPI::Vector &v)
+  {
     // From the owned entries only: @p v may be a ghosted vector, whose
     // overlapping map does not import into another map reliably.
     TrilinosWrappers::MPI::Vector owned(dofs.locally_owned_dofs(),
@@ -36,27 +81,28 @@ namespace vesicle_iga
     for (const auto i : dofs.locally_owned_dofs())
       owned[i] = v[i];
     owned.compress(VectorOperation::insert);
-    all                    = owned;
+    TrilinosWrappers::MPI::Vector on_rank_0 = vector_on_rank_0(dofs);
+    import(owned, on_rank_0);
+    if (on_rank_0.locally_owned_size() == 0)
+      return {};
     const unsigned int  nc = dofs.n_components();
     std::vector<double> c(dofs.get_space().n_basis() * nc);
     for (unsigned int i = 0; i < c.size(); ++i)
-      c[i] = all[dofs.dof_index(i / nc, i % nc)];
+      c[i] = on_rank_0[dofs.dof_index(i / nc, i % nc)];
     return c;
   }
 
 
-  template void
-  scatter_natural(const SplineDofHandler<2> &,
-                  const std::vector<double> &,
-                  TrilinosWrappers::MPI::Vector &);
-  template void
-  scatter_natural(const SplineDofHandler<3> &,
-                  const std::vector<double> &,
-                  TrilinosWrappers::MPI::Vector &);
-  template std::vector<double>
-  gather_natural(const SplineDofHandler<2> &,
-                 const TrilinosWrappers::MPI::Vector &);
-  template std::vector<double>
-  gather_natural(const SplineDofHandler<3> &,
-                 const TrilinosWrappers::MPI::Vector &);
+#define INSTANTIATE(dim)                                                      \
+  template void scatter_natural(const SplineDofHandler<dim> &,                \
+                                const std::vector<double> &,                  \
+                                TrilinosWrappers::MPI::Vector &);             \
+  template void scatter_natural_from_rank_0(const SplineDofHandler<dim> &,    \
+                                            const std::vector<double> &,      \
+                                            TrilinosWrappers::MPI::Vector &); \
+  template std::vector<double> gather_natural_on_rank_0(                      \
+    const SplineDofHandler<dim> &, const TrilinosWrappers::MPI::Vector &);
+  INSTANTIATE(2)
+  INSTANTIATE(3)
+#undef INSTANTIATE
 } // namespace vesicle_iga

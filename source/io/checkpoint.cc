@@ -206,11 +206,16 @@ namespace vesicle_iga
       H5Fcreate("checkpoint-in-memory.h5", H5F_ACC_TRUNC, H5P_DEFAULT, access),
       H5Fclose,
       "the in-memory file cannot be created");
-    std::vector<std::string> vector_names, scalar_names;
+    std::vector<std::string> vector_names, field_names, scalar_names;
     for (const auto &[name, v] : vectors)
       {
         write_dataset(file, name, v);
         vector_names.push_back(name);
+      }
+    for (const auto &[name, v] : fields)
+      {
+        write_dataset(file, name, v);
+        field_names.push_back(name);
       }
     for (const auto &[name, value] : scalars)
       {
@@ -219,6 +224,7 @@ namespace vesicle_iga
       }
     // The index last: a file without it was not completed.
     write_string_attribute(file, "vector_names", join(vector_names));
+    write_string_attribute(file, "field_names", join(field_names));
     write_string_attribute(file, "scalar_names", join(scalar_names));
     check(H5Fflush(file, H5F_SCOPE_GLOBAL), "flush of the in-memory file");
     const ssize_t size = H5Fget_file_image(file, nullptr, 0);
@@ -271,7 +277,7 @@ namespace vesicle_iga
   void
   Checkpoint::write(const std::string &filename, const MPI_Comm comm) const
   {
-    // Rank 0 holds the complete vectors and writes alone (serial HDF5): a
+    // Rank 0 holds the complete fields and writes alone (serial HDF5): a
     // failure is then its own to report, never a collective HDF5 call that
     // the other ranks wait in. The file is written as "<file>.tmp", read
     // back and renamed: a run killed while writing keeps the previous
@@ -285,11 +291,16 @@ namespace vesicle_iga
             write_file(tmp);
             const Checkpoint back = read_file(tmp);
             if (back.vectors.size() != vectors.size()
+                || back.fields.size() != fields.size()
                 || back.scalars != scalars)
               throw std::runtime_error("it does not read back as written");
             for (const auto &[name, v] : vectors)
               if (back.vectors.at(name).size() != v.size())
                 throw std::runtime_error("vector '" + name
+                                         + "' does not read back");
+            for (const auto &[name, v] : fields)
+              if (back.fields.at(name).size() != v.size())
+                throw std::runtime_error("field '" + name
                                          + "' does not read back");
             if (std::rename(tmp.c_str(), filename.c_str()) != 0)
               throw std::runtime_error("it cannot be renamed to " + filename);
@@ -326,6 +337,11 @@ namespace vesicle_iga
     for (const auto &name : Utilities::split_string_list(
            read_string_attribute(file, "vector_names"), ','))
       c.vectors[name] = read_dataset(file, name);
+    // Files of format 2 and 3 have no fields: theirs are vectors.
+    if (H5Aexists(file, "field_names") > 0)
+      for (const auto &name : Utilities::split_string_list(
+             read_string_attribute(file, "field_names"), ','))
+        c.fields[name] = read_dataset(file, name);
     for (const auto &name : Utilities::split_string_list(
            read_string_attribute(file, "scalar_names"), ','))
       c.scalars[name] = read_double_attribute(file, name);
@@ -336,8 +352,8 @@ namespace vesicle_iga
   Checkpoint
   Checkpoint::read(const std::string &filename, const MPI_Comm comm)
   {
-    // Rank 0 reads and sends: every rank then agrees on success or on the
-    // one message.
+    // Rank 0 reads and sends all but the fields: every rank then agrees on
+    // success or on the one message.
     std::string error;
     Checkpoint  c;
     if (Utilities::MPI::this_mpi_process(comm) == 0)
@@ -355,9 +371,12 @@ namespace vesicle_iga
                 filename,
                 "a complete checkpoint.h5 written by this program (" + error
                   + ")");
-    c.vectors = Utilities::MPI::broadcast(comm, c.vectors, 0);
-    c.scalars = Utilities::MPI::broadcast(comm, c.scalars, 0);
-    c.source  = filename;
+    for (const auto &[name, v] : c.fields)
+      c.field_sizes[name] = v.size();
+    c.field_sizes = Utilities::MPI::broadcast(comm, c.field_sizes, 0);
+    c.vectors     = Utilities::MPI::broadcast(comm, c.vectors, 0);
+    c.scalars     = Utilities::MPI::broadcast(comm, c.scalars, 0);
+    c.source      = filename;
     return c;
   }
 
@@ -367,6 +386,8 @@ namespace vesicle_iga
   {
     std::set<std::string> prefixes;
     for (const auto &[name, v] : vectors)
+      prefixes.insert(name.substr(0, name.find('.')));
+    for (const auto &[name, size] : field_sizes)
       prefixes.insert(name.substr(0, name.find('.')));
     std::string s;
     for (const auto &p : prefixes)

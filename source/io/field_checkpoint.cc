@@ -67,7 +67,8 @@ namespace vesicle_iga
              const SplineDofHandler<dim>                 &dofs,
              const dealii::TrilinosWrappers::MPI::Vector &v)
   {
-    checkpoint.vectors[name] = gather_natural(dofs, v);
+    checkpoint.fields[name]      = gather_natural_on_rank_0(dofs, v);
+    checkpoint.field_sizes[name] = dofs.n_dofs();
     for (const auto &entry : discretization_record(dofs))
       checkpoint.scalars[name + ".discretization." + entry.key] = entry.value;
   }
@@ -80,7 +81,10 @@ namespace vesicle_iga
              const SplineDofHandler<dim>           &dofs,
              dealii::TrilinosWrappers::MPI::Vector &v)
   {
-    const auto &natural = checkpoint.vector(name);
+    // Files of format 2 and 3 hold the field as a vector on every rank.
+    const bool        field = checkpoint.has_field(name);
+    const std::size_t size  = field ? checkpoint.field_sizes.at(name) :
+                                      checkpoint.vector(name).size();
     // Checkpoints of format 2 have no record; their size is checked below.
     for (const auto &entry : discretization_record(dofs))
       {
@@ -97,14 +101,23 @@ namespace vesicle_iga
                       + value_text(it->second) + ", this run has "
                       + value_text(entry.value));
       }
-    check_input(natural.size() == dofs.n_dofs(),
+    check_input(size == dofs.n_dofs(),
                 "Restart from",
                 checkpoint.source,
                 "a checkpoint of the same mesh, degree and fields ('" + name
-                  + "' has " + std::to_string(natural.size())
-                  + " unknowns, this run " + std::to_string(dofs.n_dofs())
-                  + ")");
-    scatter_natural(dofs, natural, v);
+                  + "' has " + std::to_string(size) + " unknowns, this run "
+                  + std::to_string(dofs.n_dofs()) + ")");
+    if (field)
+      {
+        const auto it = checkpoint.fields.find(name);
+        scatter_natural_from_rank_0(dofs,
+                                    it == checkpoint.fields.end() ?
+                                      std::vector<double>() :
+                                      it->second,
+                                    v);
+      }
+    else
+      scatter_natural(dofs, checkpoint.vector(name), v);
   }
 
 #define INSTANTIATE(dim)                                                   \

@@ -377,20 +377,18 @@ namespace vesicle_iga
     {
       if (line_samples.empty())
         return;
+      // Rank 0 samples and writes; only it prints.
       const std::vector<double> natural
-        = gather_natural(flow.dofs(), flow.solution());
+        = gather_natural_on_rank_0(flow.dofs(), flow.solution());
+      if (natural.empty())
+        return;
       for (const auto &sample : line_samples)
         {
           LineSample named = sample;
           if (!single_run)
             named.name += "-" + tag;
           const auto [deviation, integral] = write_line_sample(
-            named,
-            space,
-            natural,
-            dim + 1,
-            context.output_directory,
-            Utilities::MPI::this_mpi_process(context.communicator) == 0);
+            named, space, natural, dim + 1, context.output_directory, true);
           if (sample.print_integral)
             context.pcout << named.name << ".csv: integral of "
                           << sample.field_name

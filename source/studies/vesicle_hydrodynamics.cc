@@ -121,8 +121,9 @@ namespace vesicle_iga
                            const SplineSpace<dim>          &space,
                            const std::string               &filename)
     {
-      const auto &dofs    = model.get_flow().dofs();
-      const auto  natural = gather_natural(dofs, model.get_flow().solution());
+      const auto &dofs = model.get_flow().dofs();
+      const auto  natural
+        = gather_natural_on_rank_0(dofs, model.get_flow().solution());
       if (Utilities::MPI::this_mpi_process(dofs.get_mesh().get_communicator())
           != 0)
         return;

@@ -84,14 +84,21 @@ namespace vesicle_iga
       load(const Checkpoint &c, const std::string &prefix) override;
 
       /// The extents of the zero level set through the centre, from the
-      /// solution's natural coefficients (gathered on every rank).
+      /// solution's natural coefficients.
       std::vector<double>
       extents(const std::vector<double> &natural) const;
       std::vector<double>
       extents() const
       {
-        return extents(gather_natural(model.get_dofs(), model.solution()));
+        const auto m = level_set_measures();
+        return std::vector<double>(m.begin(), m.begin() + dim);
       }
+      /// The measures of the zero level set of the time series: the extents;
+      /// in 2D the sharp length, area and reduced area; with a potential
+      /// the midpoint along the field axis. Computed on rank 0 from the
+      /// solution gathered there, sent to every rank (collective).
+      std::vector<double>
+      level_set_measures() const;
 
       /// 2D: length, enclosed area and reduced area 4 pi A / L^2 of the
       /// longest closed piece of the zero level set (the sharp measures
@@ -169,6 +176,34 @@ namespace vesicle_iga
 
 
     template <int dim>
+    std::vector<double>
+    WillmoreMonitor<dim>::level_set_measures() const
+    {
+      const auto natural
+        = gather_natural_on_rank_0(model.get_dofs(), model.solution());
+      std::vector<double> m;
+      if (!natural.empty())
+        {
+          m = extents(natural);
+          if (dim == 2)
+            for (const double g : zero_level_set_geometry(natural))
+              m.push_back(g);
+          if (model.potential())
+            {
+              const auto x
+                = zero_crossings_along_axis(model.get_dofs().get_space(),
+                                            natural,
+                                            s.center,
+                                            material.direction());
+              m.push_back(x.size() >= 2 ? 0.5 * (x.front() + x.back()) : 0.);
+            }
+        }
+      return Utilities::MPI::broadcast(
+        model.get_dofs().get_mesh().get_communicator(), m, 0);
+    }
+
+
+    template <int dim>
     std::array<double, 3>
     WillmoreMonitor<dim>::zero_level_set_geometry(
       const std::vector<double> &c) const
@@ -218,12 +253,10 @@ namespace vesicle_iga
                              model.volume_multiplier()})
         row.push_back(v);
       // One gather of the solution for all level-set measures of the step.
-      const auto natural = gather_natural(model.get_dofs(), model.solution());
-      for (const double e : extents(natural))
-        row.push_back(e);
-      if (dim == 2)
-        for (const double g : zero_level_set_geometry(natural))
-          row.push_back(g);
+      const auto   measures = level_set_measures();
+      unsigned int measure  = 0;
+      for (; measure < (dim == 2 ? dim + 3 : dim); ++measure)
+        row.push_back(measures[measure]);
       const auto motion = model.interface_motion(info.dt);
       speed             = motion.speed;
       row.push_back(speed);
@@ -235,11 +268,7 @@ namespace vesicle_iga
             row.push_back(material.to_eV(e));
           row.push_back(material.to_eV(f.energy));
           row.push_back(model.take_potential_iterations());
-          const auto x = zero_crossings_along_axis(model.get_dofs().get_space(),
-                                                   natural,
-                                                   s.center,
-                                                   material.direction());
-          row.push_back(x.size() >= 2 ? 0.5 * (x.front() + x.back()) : 0.);
+          row.push_back(measures[measure]);
         }
       progress << " E/kappa=" << f.energy / s.kappa
                << " area_error=" << area_error
@@ -490,10 +519,12 @@ namespace vesicle_iga
                         (electric ? "fields-" : "phi-") + name);
       // Profiles of phi, sigma (and psi, |grad psi|) along the axes, and
       // phi in the plane of the field axis and the first other axis.
-      const auto phi_natural = gather_natural(*dofs, model->solution());
+      const auto phi_natural
+        = gather_natural_on_rank_0(*dofs, model->solution());
       std::vector<double> psi_natural;
       if (electric)
-        psi_natural = gather_natural(*dofs, electric->owned_potential());
+        psi_natural
+          = gather_natural_on_rank_0(*dofs, electric->owned_potential());
       if (Utilities::MPI::this_mpi_process(context.communicator) != 0)
         return;
       write_axis_profiles(*space,

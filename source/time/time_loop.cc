@@ -19,7 +19,10 @@ namespace vesicle_iga
     /// raised whenever a Checkpointable changes what it writes.
     /// 3: vectors carry the record of their discretisation (format 2
     /// files, without it, are still read; their sizes are checked).
-    const double checkpoint_format_version = 3;
+    /// 4: the fields are stored apart from the small vectors (index
+    /// "field_names"), so that only rank 0 holds them (format 2 and 3 files
+    /// are still read).
+    const double checkpoint_format_version = 4;
   } // namespace
 
   void

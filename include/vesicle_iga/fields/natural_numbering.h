@@ -28,11 +28,24 @@ namespace vesicle_iga
                   dealii::TrilinosWrappers::MPI::Vector &owned);
 
   /**
-   * The complete natural coefficient vector of @p v on every rank (n_components
-   * values per function, component fastest; a collective call).
+   * As scatter_natural(), from the complete natural coefficient vector held
+   * on rank 0 only (the other ranks pass an empty vector): no rank but 0
+   * ever holds the whole field. A collective call.
+   */
+  template <int dim>
+  void
+  scatter_natural_from_rank_0(const SplineDofHandler<dim>           &dofs,
+                              const std::vector<double>             &natural,
+                              dealii::TrilinosWrappers::MPI::Vector &owned);
+
+  /**
+   * The complete natural coefficient vector of @p v (n_components values
+   * per function, component fastest) on rank 0, an empty vector on the
+   * other ranks: for what rank 0 writes (checkpoints, samples, profiles).
+   * A collective call; @p v may be ghosted.
    */
   template <int dim>
   std::vector<double>
-  gather_natural(const SplineDofHandler<dim>                 &dofs,
-                 const dealii::TrilinosWrappers::MPI::Vector &v);
+  gather_natural_on_rank_0(const SplineDofHandler<dim>                 &dofs,
+                           const dealii::TrilinosWrappers::MPI::Vector &v);
 } // namespace vesicle_iga
