@@ -1,11 +1,8 @@
+#include <deal.II/base/data_out_base.h>
 #include <deal.II/base/quadrature_lib.h>
 
 #include <deal.II/dofs/dof_tools.h>
-#include <deal.II/fe/fe_q.h>
-#include <deal.II/fe/fe_system.h>
-#include <deal.II/fe/mapping_fe_field.h>
-#include <deal.II/fe/mapping_q.h>
-#include <deal.II/numerics/data_out.h>
+#include <deal.II/fe/fe.h>
 
 #include <vesicle_iga/base/fault_injection.h>
 #include <vesicle_iga/fields/spline_dof_handler.h>
@@ -152,75 +149,117 @@ namespace vesicle_iga
   }
 
 
+  namespace
+  {
+    /// Patches built by hand, for DataOutInterface's VTU writers.
+    template <int dim>
+    class PatchCollection : public DataOutInterface<dim, dim>
+    {
+    public:
+      std::vector<DataOutBase::Patch<dim, dim>> patches;
+      std::vector<std::string>                  names;
+
+    private:
+      const std::vector<DataOutBase::Patch<dim, dim>> &
+      get_patches() const override
+      {
+        return patches;
+      }
+      std::vector<std::string>
+      get_dataset_names() const override
+      {
+        return names;
+      }
+    };
+  } // namespace
+
+
   template <int dim>
   std::string
   SplineFieldWriter<dim>::write(const TrilinosWrappers::MPI::Vector &ghosted,
                                 const std::string                   &directory,
                                 const std::string &basename) const
   {
-    const auto        &tria = spline_dofs.get_mesh().triangulation();
+    // One patch per owned element, of degree p: the quantities evaluated at
+    // the (p+1)^dim equidistant points of the element, which VTK's Lagrange
+    // cells interpolate. On boxes the patch corners define the points (an
+    // exact multilinear map); on NURBS patches the physical points are
+    // stored with the data. No FE space, DoFHandler or mapping is built,
+    // so the output costs (p+1)^dim values per quantity and owned element.
+    const MPI_Comm     comm = spline_dofs.get_mesh().get_communicator();
+    const unsigned int rank = Utilities::MPI::this_mpi_process(comm);
     const unsigned int p    = max_degree(spline_dofs.get_space());
-
-    DoFHandler<dim> fe_dofs(tria);
-    fe_dofs.distribute_dofs(FESystem<dim>(FE_Q<dim>(p), quantities.size()));
-    LinearAlgebra::distributed::Vector<double> fields;
-    interpolate_to_fe_field(
-      spline_dofs, geometry, ghosted, quantities, order, fe_dofs, fields);
-
-    // Geometry of the output cells: the NURBS map interpolated in the same
-    // FE_Q space (for boxes the cells are straight and MappingQ(1) is exact).
-    DoFHandler<dim> geometry_dofs(tria);
-    geometry_dofs.distribute_dofs(FESystem<dim>(FE_Q<dim>(p), dim));
-    LinearAlgebra::distributed::Vector<double> euler;
-    std::vector<PointEvaluator<dim>>           coordinate;
+    std::array<std::vector<double>, dim> grid;
     for (unsigned int d = 0; d < dim; ++d)
-      coordinate.push_back([d](const SplineCellValues<dim> &v,
-                               const unsigned int           q,
-                               const std::vector<std::vector<double>> &) {
-        return v.quadrature_point(q)[d];
-      });
-    interpolate_to_fe_field(
-      spline_dofs, geometry, ghosted, coordinate, 0, geometry_dofs, euler);
-    const MappingQ<dim> q1(1);
-    const MappingFEField<dim, dim, LinearAlgebra::distributed::Vector<double>>
-                        curved(geometry_dofs, euler);
-    const Mapping<dim> &mapping
-      = geometry ? static_cast<const Mapping<dim> &>(curved) : q1;
+      for (unsigned int k = 0; k <= p; ++k)
+        grid[d].push_back(double(k) / p);
+    const unsigned int n_points = Utilities::pow(p + 1, dim);
+    const unsigned int n_data   = quantities.size() + 1;
+    const bool         curved   = geometry != nullptr;
 
-    DataOut<dim> data_out;
-    data_out.attach_dof_handler(fe_dofs);
-    data_out.add_data_vector(fields, names);
-    Vector<float> subdomain(tria.n_active_cells());
-    for (const auto &cell : tria.active_cell_iterators())
-      subdomain(cell->active_cell_index()) = cell->subdomain_id();
-    data_out.add_data_vector(subdomain, "subdomain");
+    PatchCollection<dim> collection;
+    collection.names = names;
+    collection.names.emplace_back("subdomain");
+    SplineCellValues<dim>            values(spline_dofs.get_space(),
+                                 geometry,
+                                 QGauss<1>(1),
+                                 order);
+    std::vector<std::vector<double>> c;
+    for (const unsigned int e : spline_dofs.get_mesh().locally_owned_elements())
+      {
+        values.reinit_points(e, grid);
+        get_element_coefficients(spline_dofs, ghosted, e, c);
+        DataOutBase::Patch<dim, dim> patch;
+        patch.patch_index          = collection.patches.size();
+        patch.n_subdivisions       = p;
+        patch.reference_cell       = ReferenceCells::get_hypercube<dim>();
+        patch.points_are_available = curved;
+        patch.data.reinit(n_data + (curved ? dim : 0), n_points);
+        for (unsigned int q = 0; q < n_points; ++q)
+          {
+            for (unsigned int k = 0; k < quantities.size(); ++k)
+              patch.data(k, q) = quantities[k](values, q, c);
+            patch.data(n_data - 1, q) = rank;
+            if (curved)
+              for (unsigned int d = 0; d < dim; ++d)
+                patch.data(n_data + d, q) = values.quadrature_point(q)[d];
+          }
+        // Corner v (lexicographic, as deal.II numbers cell vertices) is
+        // the point p * (v_0 + (p+1) v_1 + ...).
+        for (const unsigned int v : GeometryInfo<dim>::vertex_indices())
+          {
+            unsigned int q = 0;
+            for (unsigned int d = 0, stride = p; d < dim; ++d, stride *= p + 1)
+              q += ((v >> d) & 1) * stride;
+            patch.vertices[v] = values.quadrature_point(q);
+          }
+        collection.patches.push_back(std::move(patch));
+      }
     DataOutBase::VtkFlags flags;
     flags.write_higher_order_cells = true;
-    data_out.set_flags(flags);
-    data_out.build_patches(mapping, p, DataOut<dim>::curved_inner_cells);
+    collection.set_flags(flags);
+
     // Every rank writes its piece; all agree on the outcome, so that a
     // rank that cannot write ends the run with a message instead of
     // leaving the others in the next collective.
     std::string record, error;
     try
       {
-        record = data_out.write_vtu_with_pvtu_record(
-          directory + "/", basename, 0, tria.get_communicator(), 0, 0);
+        record = collection.write_vtu_with_pvtu_record(
+          directory + "/", basename, 0, comm, 0, 0);
       }
     catch (...)
       {
-        error = "rank "
-                + std::to_string(
-                  Utilities::MPI::this_mpi_process(tria.get_communicator()));
+        error = "rank " + std::to_string(rank);
       }
     if (fault_requested("vtu-write"))
       kill_while_writing(directory + "/" + record);
-    const auto  failed = Utilities::MPI::gather(tria.get_communicator(), error);
+    const auto  failed = Utilities::MPI::gather(comm, error);
     std::string ranks;
     for (const auto &f : failed)
       if (!f.empty())
         ranks += (ranks.empty() ? "" : ", ") + f;
-    ranks = Utilities::MPI::broadcast(tria.get_communicator(), ranks, 0);
+    ranks = Utilities::MPI::broadcast(comm, ranks, 0);
     AssertThrow(ranks.empty(),
                 ExcMessage("cannot write the VTU output " + directory + "/"
                            + basename + "* (" + ranks

@@ -13,11 +13,12 @@ namespace vesicle_iga
 
   template <int dim>
   ElectricPotential<dim>::ElectricPotential(
-    const SplineDofHandler<dim>    &dofs,
-    const ElectromechanicsMaterial &material,
-    const Quadrature<1>            &quadrature_1d,
-    const LinearSolverParameters   &solver,
-    TimerOutput                    &timer)
+    const SplineDofHandler<dim>             &dofs,
+    const ElectromechanicsMaterial          &material,
+    const Quadrature<1>                     &quadrature_1d,
+    const LinearSolverParameters            &solver,
+    TimerOutput                             &timer,
+    const TrilinosWrappers::SparsityPattern *sparsity)
     : dofs(dofs)
     , timer(timer)
     , assembler(dofs, quadrature_1d)
@@ -45,9 +46,13 @@ namespace vesicle_iga
       homogeneous.add_line(line.index);
     homogeneous.close();
 
-    TrilinosWrappers::SparsityPattern sparsity;
-    dofs.make_sparsity_pattern(sparsity);
-    linear = std::make_unique<JacobianSolver>(solver, homogeneous, sparsity);
+    TrilinosWrappers::SparsityPattern own_sparsity;
+    if (!sparsity)
+      dofs.make_sparsity_pattern(own_sparsity);
+    linear
+      = std::make_unique<JacobianSolver>(solver,
+                                         homogeneous,
+                                         sparsity ? *sparsity : own_sparsity);
     if (solver.uses_multigrid())
       linear->set_preconditioner(std::make_unique<SplineMultigrid<dim>>(
                                    dofs, homogeneous, solver.multigrid),

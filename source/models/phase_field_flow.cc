@@ -35,14 +35,24 @@ namespace vesicle_iga
     , newton(p.newton)
     , alm(1., 1., p.constraint_tolerance, p.max_alm_iterations)
   {
+    // One pattern for the Jacobian and the potential's matrix: they share
+    // its graph.
+    TrilinosWrappers::SparsityPattern sparsity;
+    dofs.make_sparsity_pattern(sparsity);
     const auto &m = p.material;
     energies      = {&bending};
     if (m.active())
       {
         // The electric energies (E6)-(E8) in the normalised units of spec
         // 3.10, each switchable; psi^n is auxiliary field 0.
-        electric = std::make_unique<ElectricPotential<dim>>(
-          dofs, m, QGauss<1>(p.quadrature_points), p.potential_solver, timer);
+        electric
+          = std::make_unique<ElectricPotential<dim>>(dofs,
+                                                     m,
+                                                     QGauss<1>(
+                                                       p.quadrature_points),
+                                                     p.potential_solver,
+                                                     timer,
+                                                     &sparsity);
         assembler.add_auxiliary_field(dofs);
         if (m.flexoelectric)
           electric_terms.push_back(std::make_unique<FlexoelectricEnergy<dim>>(
@@ -73,8 +83,6 @@ namespace vesicle_iga
       }
     assembler.add_term(rate);
 
-    TrilinosWrappers::SparsityPattern sparsity;
-    dofs.make_sparsity_pattern(sparsity);
     linear = std::make_unique<JacobianSolver>(p.solver,
                                               increment_constraints,
                                               sparsity,

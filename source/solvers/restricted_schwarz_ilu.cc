@@ -182,6 +182,13 @@ namespace vesicle_iga
       std::vector<std::pair<int, double>> row;
       row_start.assign(1, 0);
       diagonal.resize(n);
+      // Reserved once (an upper bound: dropped columns only shrink it): grown
+      // by push_back, the arrays would peak at 2-3 times their size.
+      column.clear();
+      value.clear();
+      column.reserve(rows.NumMyNonzeros());
+      value.reserve(rows.NumMyNonzeros());
+      row_start.reserve(n + 1);
       for (int k = 0; k < n; ++k)
         {
           int length = 0;

@@ -351,6 +351,9 @@ namespace vesicle_iga
     for (unsigned int l = 1; l < levels.size(); ++l)
       {
         Level &L = *levels[l];
+        // The old smoother goes first: built beside it, the new ILU
+        // factors would double the smoother's memory at every set-up.
+        L.smoother.reset();
         if (prm.smoother == "ssor")
           {
             auto s = std::make_unique<TrilinosWrappers::PreconditionSSOR>();

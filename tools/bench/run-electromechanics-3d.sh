@@ -7,11 +7,14 @@
 # per solve; a run of N steps solves N + 1 times), the phase-field
 # assembly, the multigrid set-up and the GMRES solves (the ALM Jacobian's
 # assembly and solves included), with the time per Newton iteration and the
-# peak memory per rank. Times in seconds. Usage (after tools/build.sh):
+# peak memory per rank (MB, and bytes per unknown of a rank: peak / (unknowns /
+# ranks)). Times in seconds. Usage (after tools/build.sh):
 #   tools/bench/run-electromechanics-3d.sh [element counts, default "40 60"]
 # Environment: RANKS (default "1 2"); STEPS (default 1: the first step);
 # EXTRA (parameter lines added to the file, e.g. another smoother) and TAG
-# (appended to the output directory names);
+# (appended to the output directory names); OUTPUT=1 writes the VTU files
+# and the checkpoint at every step (the memory figures of doc/performance.md
+# include them);
 # REPORT_ONLY=1 prints the table from the logs of an earlier run.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
@@ -21,9 +24,18 @@ sizes=${*:-40 60}
 RANKS=${RANKS:-1 2}
 STEPS=${STEPS:-1}
 EXTRA=${EXTRA:-}
+if [[ "${OUTPUT:-0}" == 1 ]]; then
+  EXTRA="subsection Willmore flow
+  subsection Time stepping
+    set VTU interval = 1
+    set Checkpoint interval = 1
+  end
+end
+$EXTRA"
+fi
 echo "3D electromechanics (all energies, 50 kV/m), $STEPS step(s) of dt = 0.01; times in s"
-printf "%-6s %-5s %-8s %-6s %-6s %-4s %-4s %-7s %-10s %-9s %-9s %-9s %-9s %-9s %-7s\n" \
-  cells ranks unknowns newton gmres alm cg set-up potential/sol assembly mg-setup gmres s/step s/newton peakMB
+printf "%-6s %-5s %-8s %-6s %-6s %-4s %-4s %-7s %-10s %-9s %-9s %-9s %-9s %-9s %-7s %-9s\n" \
+  cells ranks unknowns newton gmres alm cg set-up potential/sol assembly mg-setup gmres s/step s/newton peakMB B/unknown
 for n in $sizes; do
   for np in $RANKS; do
     out=output/bench-electromechanics-3d-$n-$np${TAG:-}
@@ -58,8 +70,8 @@ EOP
         -v mo="$(log_section monitor)" -v o="$(log_section output)" \
         -v m=$(log_peak_mb) 'BEGIN {
       step = (ps * s / (s + 1) + a + p + so + mo) / s
-      printf "%-6s %-5s %-8s %-6s %-6s %-4s %-4s %-7.1f %-10.2f %-9.2f %-9.2f %-9.2f %-9.1f %-9.2f %-7.0f\n",
+      printf "%-6s %-5s %-8s %-6s %-6s %-4s %-4s %-7.1f %-10.2f %-9.2f %-9.2f %-9.2f %-9.1f %-9.2f %-7.0f %-9.0f\n",
         c, np, u, nw, k, al, cg, T - (ps + a + p + so + mo + o), ps / (s + 1),
-        a / s, p / s, so / s, step, step * s / nw, m }'
+        a / s, p / s, so / s, step, step * s / nw, m, m * 1e6 * np / u }'
   done
 done

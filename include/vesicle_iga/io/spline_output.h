@@ -47,8 +47,12 @@ namespace vesicle_iga
 
   /**
    * Writes named quantities of a spline field as VTU/PVTU (one .vtu per
-   * rank, higher-order Lagrange cells of degree p, curved on NURBS patches
-   * through a MappingFEField of the interpolated geometry).
+   * rank with its owned elements, higher-order Lagrange cells of degree p:
+   * the quantities at the (p+1)^d equidistant points of every element,
+   * curved on NURBS patches through the physical points, plus the owning
+   * rank as "subdomain"). The patches are built from the spline directly,
+   * without an FE space on the mesh: the output costs (p+1)^d values per
+   * quantity and owned element.
    */
   template <int dim>
   class SplineFieldWriter

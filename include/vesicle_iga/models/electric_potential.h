@@ -4,6 +4,7 @@
 #include <deal.II/base/timer.h>
 
 #include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/trilinos_sparsity_pattern.h>
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <vesicle_iga/kernel/system_assembler.h>
@@ -34,12 +35,16 @@ namespace vesicle_iga
   {
   public:
     /// @p dofs: one component on the phase field's space (psi and phi use
-    /// the same unknowns' numbering).
+    /// the same unknowns' numbering). @p sparsity: the pattern of @p dofs
+    /// if the caller has made it (the phase field's Jacobian): the matrix
+    /// then shares its graph, which is the size of the matrix's indices.
     ElectricPotential(const SplineDofHandler<dim>    &dofs,
                       const ElectromechanicsMaterial &material,
                       const dealii::Quadrature<1>    &quadrature_1d,
                       const LinearSolverParameters   &solver,
-                      dealii::TimerOutput            &timer);
+                      dealii::TimerOutput            &timer,
+                      const dealii::TrilinosWrappers::SparsityPattern *sparsity
+                      = nullptr);
 
     /// Solve (E17) with sigma(phi) for the ghosted phase field @p phi;
     /// returns the Krylov iterations and residual.
