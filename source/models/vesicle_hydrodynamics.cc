@@ -23,14 +23,23 @@ namespace vesicle_iga
     class VesicleGeometry : public Integrand<dim>
     {
     public:
-      VesicleGeometry(const unsigned int phi, const double eps)
+      /// Moments about @p reference; in a direction of period
+      /// `box.period[k]` > 0 the coordinate is wrapped into
+      /// [-period / 2, period / 2) about it, and the circular moments
+      /// int c cos, int c sin of that direction are added (sums 8-11).
+      VesicleGeometry(const unsigned int phi,
+                      const double       eps,
+                      const PeriodicBox &box,
+                      const Point<2>    &reference)
         : phi(phi)
         , eps(eps)
+        , box(box)
+        , reference(reference)
       {}
       unsigned int
       n_values() const override
       {
-        return 8;
+        return 12;
       }
       void
       declare(TermDeclaration<dim> &d) override
@@ -51,23 +60,39 @@ namespace vesicle_iga
             double       g2 = 0;
             for (unsigned int k = 0; k < dim; ++k)
               g2 += in[gradient[k]][q] * in[gradient[k]][q];
-            const double c = 0.5 * (1 + p), x = in.point(q)[0],
-                         y = in.point(q)[1], w = JxW[q];
+            const double c = 0.5 * (1 + p), w = JxW[q];
+            double       r[2];
+            for (unsigned int k = 0; k < 2; ++k)
+              {
+                const double x = in.point(q)[k];
+                r[k]           = x - reference[k];
+                if (box.period[k] > 0)
+                  {
+                    r[k]
+                      -= box.period[k] * std::floor(r[k] / box.period[k] + 0.5);
+                    const double angle
+                      = 2 * numbers::PI * (x - box.lower[k]) / box.period[k];
+                    sums[8 + 2 * k] += c * std::cos(angle) * w;
+                    sums[9 + 2 * k] += c * std::sin(angle) * w;
+                  }
+              }
             sums[0]
               += (0.5 * eps * g2 + (p * p - 1) * (p * p - 1) / (4 * eps)) * w;
             sums[1] += p * w;
             sums[2] += c * w;
-            sums[3] += c * x * w;
-            sums[4] += c * y * w;
-            sums[5] += c * x * x * w;
-            sums[6] += c * x * y * w;
-            sums[7] += c * y * y * w;
+            sums[3] += c * r[0] * w;
+            sums[4] += c * r[1] * w;
+            sums[5] += c * r[0] * r[0] * w;
+            sums[6] += c * r[0] * r[1] * w;
+            sums[7] += c * r[1] * r[1] * w;
           }
       }
 
     private:
       const unsigned int           phi;
       const double                 eps;
+      const PeriodicBox            box;
+      const Point<2>               reference;
       InputHandle                  value;
       std::array<InputHandle, dim> gradient;
     };
@@ -93,7 +118,7 @@ namespace vesicle_iga
       unsigned int
       n_values() const override
       {
-        return 9;
+        return 11;
       }
       void
       declare(TermDeclaration<dim> &d) override
@@ -147,6 +172,10 @@ namespace vesicle_iga
             sums[6] += -c * (grad_f2 + s * f * f) * w;
             sums[7] += vs * w;
             sums[8] += vs * f * w;
+            const double beta = membrane::volume_multiplier_weight(
+              p, eps, coefficients.membrane_volume_multiplier);
+            sums[9] += beta * w;
+            sums[10] += beta * f * w;
           }
       }
 
@@ -300,6 +329,13 @@ namespace vesicle_iga
     , lambda_g(n_vesicles)
     , lambda_v(n_vesicles)
   {
+    for (unsigned int k = 0; k < 2; ++k)
+      if (space.knot_vector(k).is_periodic())
+        {
+          const auto &breaks     = space.knot_vector(k).breakpoints();
+          periodic_box.lower[k]  = breaks.front();
+          periodic_box.period[k] = breaks.back() - breaks.front();
+        }
     std::vector<unsigned int> phases;
     for (unsigned int i = 0; i < n; ++i)
       {
@@ -497,40 +533,74 @@ namespace vesicle_iga
   std::vector<VesicleMeasures>
   VesicleHydrodynamics<dim>::measure() const
   {
-    std::vector<std::unique_ptr<Integrand<dim>>> owned;
-    std::vector<Integrand<dim> *>                list;
-    for (unsigned int i = 0; i < n; ++i)
+    // Periodic directions: the centroid is the circular mean of the
+    // indicator (a first pass), and the moments are taken about it with the
+    // coordinate wrapped into one period, so that a vesicle's tails seen
+    // through the seam (or a vesicle crossing it) do not pull it across the
+    // box.
+    const bool periodic
+      = periodic_box.period[0] > 0 || periodic_box.period[1] > 0;
+    std::vector<Point<2>> references(n);
+    if (periodic)
       {
-        owned.push_back(
-          std::make_unique<VesicleGeometry<dim>>(phase(i), membrane.epsilon));
-        owned.push_back(
-          std::make_unique<HydrodynamicBendingEnergy<dim>>(phase(i), membrane));
+        const auto sums = integrate_geometry(references);
+        for (unsigned int i = 0; i < n; ++i)
+          for (unsigned int k = 0; k < 2; ++k)
+            if (periodic_box.period[k] > 0)
+              {
+                double angle = std::atan2(sums[12 * i + 9 + 2 * k],
+                                          sums[12 * i + 8 + 2 * k]);
+                if (angle < 0)
+                  angle += 2 * numbers::PI;
+                references[i][k]
+                  = periodic_box.lower[k]
+                    + periodic_box.period[k] / (2 * numbers::PI) * angle;
+              }
       }
-    for (auto &o : owned)
-      list.push_back(o.get());
-    AssemblyState state;
-    state.value     = &flow_model->solution();
-    const auto sums = flow_model->get_assembler().integrate(list, state);
+    const auto                   sums = integrate_geometry(references);
     std::vector<VesicleMeasures> result(n);
     for (unsigned int i = 0; i < n; ++i)
       {
-        const double *s  = &sums[9 * i];
-        auto         &m  = result[i];
-        m.area           = s[0];
-        m.volume         = s[1];
-        m.centroid       = Point<2>(s[3] / s[2], s[4] / s[2]);
-        const double Ixx = s[5] / s[2] - m.centroid[0] * m.centroid[0];
-        const double Ixy = s[6] / s[2] - m.centroid[0] * m.centroid[1];
-        const double Iyy = s[7] / s[2] - m.centroid[1] * m.centroid[1];
+        const double *s = &sums[12 * i];
+        const double *b = &sums[12 * n + i];
+        auto         &m = result[i];
+        m.area          = s[0];
+        m.volume        = s[1];
+        const double dx = s[3] / s[2], dy = s[4] / s[2];
+        m.centroid = Point<2>(references[i][0] + dx, references[i][1] + dy);
+        const double Ixx = s[5] / s[2] - dx * dx;
+        const double Ixy = s[6] / s[2] - dx * dy;
+        const double Iyy = s[7] / s[2] - dy * dy;
         // Spec 4.12: angle of the major principal axis to the x axis.
         m.angle = 0.5 * std::atan2(2 * Ixy, Ixx - Iyy);
         // atan2 returns pi and -pi for the same axis; an axis is a line,
         // so report it in (-pi/2, pi/2].
         if (m.angle <= -0.5 * numbers::PI + 1e-12)
           m.angle += numbers::PI;
-        m.bending_energy = s[8];
+        m.bending_energy = b[0];
       }
     return result;
+  }
+
+
+  template <int dim>
+  std::vector<double>
+  VesicleHydrodynamics<dim>::integrate_geometry(
+    const std::vector<Point<2>> &references) const
+  {
+    std::vector<std::unique_ptr<Integrand<dim>>> owned;
+    for (unsigned int i = 0; i < n; ++i)
+      owned.push_back(std::make_unique<VesicleGeometry<dim>>(
+        phase(i), membrane.epsilon, periodic_box, references[i]));
+    for (unsigned int i = 0; i < n; ++i)
+      owned.push_back(
+        std::make_unique<HydrodynamicBendingEnergy<dim>>(phase(i), membrane));
+    std::vector<Integrand<dim> *> list;
+    for (auto &o : owned)
+      list.push_back(o.get());
+    AssemblyState state;
+    state.value = &flow_model->solution();
+    return flow_model->get_assembler().integrate(list, state);
   }
 
 
@@ -615,8 +685,11 @@ namespace vesicle_iga
     const double eta      = membrane.mobility;
     for (unsigned int i = 0; i < n; ++i)
       {
-        const double *s = &sums[9 * i];
-        // (H13): [|Omega|, int f; int f, int f^2] (lambda_v, lambda_g) = b.
+        const double *s = &sums[11 * i];
+        // (H13) with the weight beta of lambda_v in (H1) (beta = 1: the
+        // source's |Omega| and int f):
+        //   [int beta, int f; int beta f, int f^2] (lambda_v, lambda_g) = b,
+        // from d/dt V_i = int d_t phi_i and d/dt A_i = -int f_i d_t phi_i.
         double b_v = s[3] / eta + s[5] + s[7];
         double b_g = s[4] / eta + s[6] + s[8];
         if (dt > 0)
@@ -624,13 +697,13 @@ namespace vesicle_iga
             b_v += (volume_0[i] - measures[i].volume) / (2 * dt);
             b_g -= (area_0[i] - measures[i].area) / (2 * dt);
           }
-        const double det = s[0] * s[2] - s[1] * s[1];
+        const double det = s[9] * s[2] - s[1] * s[10];
         AssertThrow(det > 0,
                     ExcMessage("(H13) is singular for vesicle "
                                + std::to_string(i + 1)
                                + ": f is constant (no interface)"));
         lambda_v[i] = (s[2] * b_v - s[1] * b_g) / det;
-        lambda_g[i] = (s[0] * b_g - s[1] * b_v) / det;
+        lambda_g[i] = (s[9] * b_g - s[10] * b_v) / det;
         constraint[i]->get_formula().set_multipliers(lambda_g[i], lambda_v[i]);
       }
   }

@@ -31,6 +31,15 @@ namespace vesicle_iga
   };
 
 
+  /// The periodic directions of the box, for the vesicle measures: period
+  /// > 0 in a periodic direction (0 otherwise) and the lower end.
+  struct PeriodicBox
+  {
+    double period[2] = {0, 0};
+    double lower[2]  = {0, 0};
+  };
+
+
   /**
    * N vesicles in an incompressible flow, spec Part H in the mixed-free
    * form of 4.13: the unknowns u, p (the flow model) and phi_i, lambda_i
@@ -184,6 +193,10 @@ namespace vesicle_iga
     /// step just taken (0: no relaxation terms, the initial state).
     void
     update_multipliers(const double dt);
+    /// Per vesicle the 12 sums of the geometry integrand about
+    /// @p references, then per vesicle its bending energy.
+    std::vector<double>
+    integrate_geometry(const std::vector<dealii::Point<2>> &references) const;
 
     const MembraneCoefficients                             membrane;
     const FlowCoefficients<dim>                            flow_coefficients;
@@ -200,6 +213,7 @@ namespace vesicle_iga
     std::unique_ptr<IncompressibleFlow<dim>>                   flow_model;
     std::vector<double> area_0, volume_0, lambda_g, lambda_v;
     double              last_dt = 0;
+    PeriodicBox         periodic_box;
     /// Per locally owned unknown: whether it is a phase field.
     std::vector<bool> phase_entries;
   };

@@ -24,6 +24,13 @@ namespace vesicle_iga
     double epsilon            = 1. / 16;
     /// Whether the interaction energy (H10) acts.
     bool interaction = true;
+    /// Where the volume multiplier acts in (H1): true (this project's
+    /// default) on the membrane only, -lambda_v delta_eps(phi) with
+    /// delta_eps of (H12b); false as in the source, -lambda_v on the whole
+    /// domain, which lifts phi_i off -1 everywhere ("fog") and so moves
+    /// volume between the far field and the vesicle (doc/hydrodynamics.md,
+    /// "Volume multiplier").
+    bool membrane_volume_multiplier = true;
 
     /// 1 / (Re Ca), the factor of the bending force (H3).
     double
@@ -62,6 +69,15 @@ namespace vesicle_iga
     {
       const T s = 1. - phi * phi;
       return 3. / (4. * std::sqrt(2.) * eps) * s * s;
+    }
+
+    /// The weight of the volume multiplier lambda_v in (H1): delta_eps(phi)
+    /// of (H12b) on the membrane, or 1 on the whole domain (the source).
+    template <typename T>
+    inline T
+    volume_multiplier_weight(const T &phi, const double eps, const bool local)
+    {
+      return local ? surface_delta(phi, eps) : T(1.);
     }
 
     /// B(phi) = (phi^2 - 1)^2 / eps of (H8).

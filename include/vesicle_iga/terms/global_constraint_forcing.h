@@ -7,11 +7,15 @@ namespace vesicle_iga
 {
   /**
    * The global area and volume multipliers of one vesicle in the flow:
-   * the part -lambda_g f - lambda_v of the chemical potential of (H1), with
-   * f of (H2), in the phase-field equation (H16) and, with the sign of
-   * (H14), in the momentum forcing:
-   *   eta_phi (r, -lambda_g f - lambda_v)  +  (w, (lambda_g f + lambda_v)
-   *   grad phi).
+   * the part -lambda_g f - lambda_v beta(phi) of the chemical potential of
+   * (H1), with f of (H2), in the phase-field equation (H16) and, with the
+   * sign of (H14), in the momentum forcing:
+   *   eta_phi (r, -lambda_g f - lambda_v beta)  +  (w, (lambda_g f +
+   *   lambda_v beta) grad phi),
+   * beta = delta_eps(phi) of (H12b) (membrane volume multiplier, default)
+   * or 1 (the source's (H1)); see MembraneCoefficients. The forcing keeps
+   * the partner of the advection term, so the energy law of spec 4.3 holds
+   * with either.
    * lambda_g, lambda_v are constants within a step, from the (H13) solve
    * after the previous step (set_multipliers).
    */
@@ -39,8 +43,10 @@ namespace vesicle_iga
     {
       // in: phi, Delta phi, d_a phi.
       const T f = membrane::chemical_potential(in[0], in[1], eps);
-      const T m = -lambda_g * f - lambda_v;
-      out[0]    = eta * m;
+      const T m
+        = -lambda_g * f
+          - lambda_v * membrane::volume_multiplier_weight(in[0], eps, local);
+      out[0] = eta * m;
       for (unsigned int a = 0; a < dim; ++a)
         out[1 + a] = -m * in[2 + a];
     }
@@ -50,6 +56,7 @@ namespace vesicle_iga
 
   private:
     double eps, eta;
+    bool   local;
     /// Nonzero while the pattern of the Jacobian is probed.
     double lambda_g = 1, lambda_v = 1;
   };
