@@ -98,8 +98,10 @@ namespace vesicle_iga
     };
 
 
-    /// The integrals of (H13) for vesicle i: |Omega|, int f, int f^2,
+    /// The integrals of (H13) for vesicle i: int beta, int f, int f^2,
     /// int u.grad phi, int (u.grad phi) f, int g, int g f, int vs, int vs f,
+    /// int beta f, with beta the weight of lambda_v in (H1) (1: int beta =
+    /// |Omega|),
     /// with int g = -c int s f and int g f = -c int (|grad f|^2 + s f^2)
     /// (H3 integrated by parts with d_n f = 0), s = (3 phi^2 - 1) / eps^2,
     /// vs_i = sum over j != i of (H11).
@@ -118,7 +120,7 @@ namespace vesicle_iga
       unsigned int
       n_values() const override
       {
-        return 11;
+        return 10;
       }
       void
       declare(TermDeclaration<dim> &d) override
@@ -162,8 +164,10 @@ namespace vesicle_iga
             for (unsigned int j = 0; j < phases.size(); ++j)
               if (j != i)
                 vs += potential.potential(p, in[values[j]][q]);
-            const double w = JxW[q];
-            sums[0] += w;
+            const double w    = JxW[q];
+            const double beta = membrane::volume_multiplier_weight(
+              p, eps, coefficients.membrane_volume_multiplier);
+            sums[0] += beta * w;
             sums[1] += f * w;
             sums[2] += f * f * w;
             sums[3] += advection * w;
@@ -172,10 +176,7 @@ namespace vesicle_iga
             sums[6] += -c * (grad_f2 + s * f * f) * w;
             sums[7] += vs * w;
             sums[8] += vs * f * w;
-            const double beta = membrane::volume_multiplier_weight(
-              p, eps, coefficients.membrane_volume_multiplier);
-            sums[9] += beta * w;
-            sums[10] += beta * f * w;
+            sums[9] += beta * f * w;
           }
       }
 
@@ -543,7 +544,7 @@ namespace vesicle_iga
     std::vector<Point<2>> references(n);
     if (periodic)
       {
-        const auto sums = integrate_geometry(references);
+        const auto sums = integrate_geometry(references, false);
         for (unsigned int i = 0; i < n; ++i)
           for (unsigned int k = 0; k < 2; ++k)
             if (periodic_box.period[k] > 0)
@@ -557,7 +558,7 @@ namespace vesicle_iga
                     + periodic_box.period[k] / (2 * numbers::PI) * angle;
               }
       }
-    const auto                   sums = integrate_geometry(references);
+    const auto                   sums = integrate_geometry(references, true);
     std::vector<VesicleMeasures> result(n);
     for (unsigned int i = 0; i < n; ++i)
       {
@@ -586,13 +587,14 @@ namespace vesicle_iga
   template <int dim>
   std::vector<double>
   VesicleHydrodynamics<dim>::integrate_geometry(
-    const std::vector<Point<2>> &references) const
+    const std::vector<Point<2>> &references,
+    const bool                   with_bending_energy) const
   {
     std::vector<std::unique_ptr<Integrand<dim>>> owned;
     for (unsigned int i = 0; i < n; ++i)
       owned.push_back(std::make_unique<VesicleGeometry<dim>>(
         phase(i), membrane.epsilon, periodic_box, references[i]));
-    for (unsigned int i = 0; i < n; ++i)
+    for (unsigned int i = 0; with_bending_energy && i < n; ++i)
       owned.push_back(
         std::make_unique<HydrodynamicBendingEnergy<dim>>(phase(i), membrane));
     std::vector<Integrand<dim> *> list;
@@ -673,19 +675,22 @@ namespace vesicle_iga
     std::vector<std::unique_ptr<Integrand<dim>>> owned;
     std::vector<Integrand<dim> *>                list;
     for (unsigned int i = 0; i < n; ++i)
-      {
-        owned.push_back(
-          std::make_unique<MultiplierIntegrals<dim>>(i, phases, membrane));
-        list.push_back(owned.back().get());
-      }
+      owned.push_back(
+        std::make_unique<MultiplierIntegrals<dim>>(i, phases, membrane));
+    // A_i and V_i (the first two geometry sums) in the same pass.
+    for (unsigned int i = 0; i < n; ++i)
+      owned.push_back(std::make_unique<VesicleGeometry<dim>>(
+        phase(i), membrane.epsilon, periodic_box, Point<2>()));
+    for (auto &o : owned)
+      list.push_back(o.get());
     AssemblyState state;
-    state.value           = &flow_model->solution();
-    const auto   sums     = flow_model->get_assembler().integrate(list, state);
-    const auto   measures = measure();
-    const double eta      = membrane.mobility;
+    state.value            = &flow_model->solution();
+    const auto    sums     = flow_model->get_assembler().integrate(list, state);
+    const double *geometry = &sums[10 * n];
+    const double  eta      = membrane.mobility;
     for (unsigned int i = 0; i < n; ++i)
       {
-        const double *s = &sums[11 * i];
+        const double *s = &sums[10 * i];
         // (H13) with the weight beta of lambda_v in (H1) (beta = 1: the
         // source's |Omega| and int f):
         //   [int beta, int f; int beta f, int f^2] (lambda_v, lambda_g) = b,
@@ -694,16 +699,16 @@ namespace vesicle_iga
         double b_g = s[4] / eta + s[6] + s[8];
         if (dt > 0)
           {
-            b_v += (volume_0[i] - measures[i].volume) / (2 * dt);
-            b_g -= (area_0[i] - measures[i].area) / (2 * dt);
+            b_v += (volume_0[i] - geometry[12 * i + 1]) / (2 * dt);
+            b_g -= (area_0[i] - geometry[12 * i]) / (2 * dt);
           }
-        const double det = s[9] * s[2] - s[1] * s[10];
+        const double det = s[0] * s[2] - s[1] * s[9];
         AssertThrow(det > 0,
                     ExcMessage("(H13) is singular for vesicle "
                                + std::to_string(i + 1)
                                + ": f is constant (no interface)"));
         lambda_v[i] = (s[2] * b_v - s[1] * b_g) / det;
-        lambda_g[i] = (s[9] * b_g - s[10] * b_v) / det;
+        lambda_g[i] = (s[0] * b_g - s[9] * b_v) / det;
         constraint[i]->get_formula().set_multipliers(lambda_g[i], lambda_v[i]);
       }
   }

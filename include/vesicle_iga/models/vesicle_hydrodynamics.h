@@ -194,9 +194,11 @@ namespace vesicle_iga
     void
     update_multipliers(const double dt);
     /// Per vesicle the 12 sums of the geometry integrand about
-    /// @p references, then per vesicle its bending energy.
+    /// @p references (A_i and V_i first), then, if asked for, per vesicle
+    /// its bending energy (the costly part: Hessians).
     std::vector<double>
-    integrate_geometry(const std::vector<dealii::Point<2>> &references) const;
+    integrate_geometry(const std::vector<dealii::Point<2>> &references,
+                       const bool with_bending_energy) const;
 
     const MembraneCoefficients                             membrane;
     const FlowCoefficients<dim>                            flow_coefficients;
