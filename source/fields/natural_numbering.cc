@@ -55,17 +55,20 @@ namespace vesicle_iga
 
 
   template <int dim>
-  void
-  scatter_natural_from_rank_0(const SplineDofHandler<dim>   &dofs,
-                              const std::vector<double>     &natural,
-                              TrilinosWrappers::MPI::Vector &owned)
+  std::vector<std::pair<std::uint64_t, types::global_dof_index>>
+  owned_natural_entries(const SplineDofHandler<dim> &dofs)
   {
-    TrilinosWrappers::MPI::Vector on_rank_0 = vector_on_rank_0(dofs);
-    const unsigned int            nc        = dofs.n_components();
-    for (unsigned int i = 0; i < natural.size(); ++i)
-      on_rank_0[dofs.dof_index(i / nc, i % nc)] = natural[i];
-    on_rank_0.compress(VectorOperation::insert);
-    import(on_rank_0, owned);
+    const IndexSet    &owned = dofs.locally_owned_dofs();
+    const unsigned int nc    = dofs.n_components();
+    std::vector<std::pair<std::uint64_t, types::global_dof_index>> entries;
+    entries.reserve(owned.n_elements());
+    for (std::uint64_t i = 0; i < dofs.n_dofs(); ++i)
+      {
+        const types::global_dof_index d = dofs.dof_index(i / nc, i % nc);
+        if (owned.is_element(d))
+          entries.emplace_back(i, d);
+      }
+    return entries;
   }
 
 
@@ -93,14 +96,13 @@ namespace vesicle_iga
   }
 
 
-#define INSTANTIATE(dim)                                                      \
-  template void scatter_natural(const SplineDofHandler<dim> &,                \
-                                const std::vector<double> &,                  \
-                                TrilinosWrappers::MPI::Vector &);             \
-  template void scatter_natural_from_rank_0(const SplineDofHandler<dim> &,    \
-                                            const std::vector<double> &,      \
-                                            TrilinosWrappers::MPI::Vector &); \
-  template std::vector<double> gather_natural_on_rank_0(                      \
+#define INSTANTIATE(dim)                                                  \
+  template void scatter_natural(const SplineDofHandler<dim> &,            \
+                                const std::vector<double> &,              \
+                                TrilinosWrappers::MPI::Vector &);         \
+  template std::vector<std::pair<std::uint64_t, types::global_dof_index>> \
+  owned_natural_entries(const SplineDofHandler<dim> &);                   \
+  template std::vector<double> gather_natural_on_rank_0(                  \
     const SplineDofHandler<dim> &, const TrilinosWrappers::MPI::Vector &);
   INSTANTIATE(2)
   INSTANTIATE(3)

@@ -67,8 +67,16 @@ namespace vesicle_iga
              const SplineDofHandler<dim>                 &dofs,
              const dealii::TrilinosWrappers::MPI::Vector &v)
   {
-    checkpoint.fields[name]      = gather_natural_on_rank_0(dofs, v);
-    checkpoint.field_sizes[name] = dofs.n_dofs();
+    // Each rank its own entries: no rank holds the whole field.
+    FieldPart &part = checkpoint.fields[name];
+    part.size       = dofs.n_dofs();
+    part.natural_indices.clear();
+    part.values.clear();
+    for (const auto &[natural, dof] : owned_natural_entries(dofs))
+      {
+        part.natural_indices.push_back(natural);
+        part.values.push_back(v[dof]);
+      }
     for (const auto &entry : discretization_record(dofs))
       checkpoint.scalars[name + ".discretization." + entry.key] = entry.value;
   }
@@ -83,7 +91,7 @@ namespace vesicle_iga
   {
     // Files of format 2 and 3 hold the field as a vector on every rank.
     const bool        field = checkpoint.has_field(name);
-    const std::size_t size  = field ? checkpoint.field_sizes.at(name) :
+    const std::size_t size  = field ? checkpoint.fields.at(name).size :
                                       checkpoint.vector(name).size();
     // Checkpoints of format 2 have no record; their size is checked below.
     for (const auto &entry : discretization_record(dofs))
@@ -109,12 +117,19 @@ namespace vesicle_iga
                   + std::to_string(dofs.n_dofs()) + ")");
     if (field)
       {
-        const auto it = checkpoint.fields.find(name);
-        scatter_natural_from_rank_0(dofs,
-                                    it == checkpoint.fields.end() ?
-                                      std::vector<double>() :
-                                      it->second,
-                                    v);
+        // Each rank reads its own entries.
+        const auto                 entries = owned_natural_entries(dofs);
+        std::vector<std::uint64_t> natural_indices;
+        natural_indices.reserve(entries.size());
+        for (const auto &entry : entries)
+          natural_indices.push_back(entry.first);
+        const std::vector<double> values
+          = checkpoint.read_field(name,
+                                  natural_indices,
+                                  dofs.get_mesh().get_communicator());
+        for (std::size_t k = 0; k < entries.size(); ++k)
+          v[entries[k].second] = values[k];
+        v.compress(VectorOperation::insert);
       }
     else
       scatter_natural(dofs, checkpoint.vector(name), v);

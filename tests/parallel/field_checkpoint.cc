@@ -1,16 +1,20 @@
 // Fields through a checkpoint file and back (io/field_checkpoint,
-// fields/natural_numbering): a two-component field on a 2D space and a
-// one-component field on a 3D space, with values f(natural index) so that
-// a misplaced entry shows, are saved, written, read and loaded:
-//  - in the layout of format 4 (save_field: gathered on rank 0 only);
-//  - in the layout of format 2 and 3 (the natural vector as a small
-//    vector on every rank), which a restart must still read;
-//  - both load the original field exactly (max difference 0);
-//  - after the read, the fields are held by rank 0 only (sizes on every
-//    rank, data on rank 0, none elsewhere);
-//  - the natural vector gathered on rank 0 is f itself.
+// io/checkpoint, fields/natural_numbering): a two-component field on a 2D
+// space and a one-component field on a 3D space, with values f(natural
+// index) so that a misplaced entry shows, are saved, written, read and
+// loaded:
+//  - save_field leaves each rank its own entries only (as many as it owns,
+//    n in all), and every rank writes them into the file itself;
+//  - the file holds f at its natural indices, whatever the number of ranks
+//    that wrote it (rank 0 reads every entry back with read_field);
+//  - after read(), no rank holds any value of a field, only its size;
+//  - the layout of format 2 and 3 (the natural vector as a small vector on
+//    every rank), which a restart must still read, and the current one
+//    both load the original field exactly (max difference 0);
+//  - the natural vector gathered on rank 0 (for samples) is f itself.
 // Serial and on 2 and 3 ranks (the partition, hence the numbering of the
-// unknowns, differs; the natural values must not).
+// unknowns and the runs of natural indices each rank writes, differs; the
+// file must not).
 
 #include <deal.II/base/mpi.h>
 
@@ -52,27 +56,44 @@ check(const std::string      &name,
 
   Checkpoint current, older;
   save_field(current, "test.field", dofs, v);
+  const FieldPart &part = current.fields.at("test.field");
+  const bool       own_part_only
+    = part.values.size() == dofs.locally_owned_dofs().n_elements()
+      && Utilities::MPI::sum(part.values.size(), comm) == dofs.n_dofs();
   older.vectors["test.field"] = natural;
   current.write("current.h5", comm);
   older.write("older.h5", comm);
 
-  std::string result;
-  for (const auto &[layout, file] : {std::make_pair("format 4", "current.h5"),
+  std::string result
+    = std::string(", each rank saves its own part ")
+      + (Utilities::MPI::min(int(own_part_only), comm) == 1 ? "ok" : "FAILED");
+  {
+    const Checkpoint           c = Checkpoint::read("current.h5", comm);
+    std::vector<std::uint64_t> all;
+    if (root)
+      for (std::uint64_t i = 0; i < natural.size(); ++i)
+        all.push_back(i);
+    const bool in_file = c.read_field("test.field", all, comm)
+                         == (root ? natural : std::vector<double>());
+    result
+      += std::string(", the file holds the natural field ")
+         + (Utilities::MPI::min(int(in_file), comm) == 1 ? "ok" : "FAILED");
+  }
+  for (const auto &[layout, file] : {std::make_pair("current", "current.h5"),
                                      std::make_pair("format 2/3", "older.h5")})
     {
       const Checkpoint              c = Checkpoint::read(file, comm);
       TrilinosWrappers::MPI::Vector w(dofs.locally_owned_dofs(), comm);
       load_field(c, "test.field", dofs, w);
       w -= v;
-      const bool on_rank_0_only
+      const bool sizes_only
         = !c.has_field("test.field")
-          || (c.field_sizes.at("test.field") == dofs.n_dofs()
-              && c.fields.size() == (root ? 1u : 0u));
-      result
-        += std::string(", ") + layout + ": loaded exactly "
-           + (w.linfty_norm() == 0 ? "ok" : "FAILED") + ", held by rank 0 only "
-           + (Utilities::MPI::min(int(on_rank_0_only), comm) == 1 ? "ok" :
-                                                                    "FAILED");
+          || (c.fields.at("test.field").size == dofs.n_dofs()
+              && c.fields.at("test.field").values.empty());
+      result += std::string(", ") + layout + ": loaded exactly "
+                + (w.linfty_norm() == 0 ? "ok" : "FAILED") + ", no values held "
+                + (Utilities::MPI::min(int(sizes_only), comm) == 1 ? "ok" :
+                                                                     "FAILED");
     }
   out << name << " (" << dofs.n_dofs() << " unknowns): gathered on rank 0 "
       << (Utilities::MPI::min(int(gathered_ok), comm) == 1 ? "ok" : "FAILED")

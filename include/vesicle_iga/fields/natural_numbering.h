@@ -4,6 +4,8 @@
 
 #include <vesicle_iga/fields/spline_dof_handler.h>
 
+#include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace vesicle_iga
@@ -28,15 +30,14 @@ namespace vesicle_iga
                   dealii::TrilinosWrappers::MPI::Vector &owned);
 
   /**
-   * As scatter_natural(), from the complete natural coefficient vector held
-   * on rank 0 only (the other ranks pass an empty vector): no rank but 0
-   * ever holds the whole field. A collective call.
+   * The locally owned unknowns of @p dofs as pairs (natural index, index in
+   * the numbering of @p dofs), ascending in the natural index (n_components
+   * values per function, component fastest): what a rank reads and writes
+   * of a field in a checkpoint.
    */
   template <int dim>
-  void
-  scatter_natural_from_rank_0(const SplineDofHandler<dim>           &dofs,
-                              const std::vector<double>             &natural,
-                              dealii::TrilinosWrappers::MPI::Vector &owned);
+  std::vector<std::pair<std::uint64_t, dealii::types::global_dof_index>>
+  owned_natural_entries(const SplineDofHandler<dim> &dofs);
 
   /**
    * The complete natural coefficient vector of @p v (n_components values
