@@ -293,9 +293,18 @@ namespace vesicle_iga
           target->set_lumped_operators(lumped);
         };
       }
+    // Across steps: rebuilt when the step size (the rate factor of the
+    // Jacobian's mass terms) changes.
+    const bool across_steps
+      = parameters.solver.preconditioner_reuse == "across-steps";
     linear->set_preconditioner(std::move(whole),
-                               JacobianSolver::Reuse::every_matrix,
-                               lumped_operators);
+                               across_steps ?
+                                 JacobianSolver::Reuse::across_steps :
+                                 JacobianSolver::Reuse::every_matrix,
+                               lumped_operators,
+                               [this]() {
+                                 return stepper->stage().rate_factor[0];
+                               });
   }
 
 

@@ -162,7 +162,8 @@ namespace vesicle_iga
   void
   LinearSolverParameters::declare_flow(ParameterHandler  &prm,
                                        const std::string &default_method,
-                                       const std::string &default_tolerance)
+                                       const std::string &default_tolerance,
+                                       const std::string &default_reuse)
   {
     prm.enter_subsection("Linear solver");
     prm.declare_entry("Method",
@@ -181,6 +182,20 @@ namespace vesicle_iga
                            default_tolerance,
                            "fails the time step (which is then retried with "
                            "a smaller step)");
+    prm.declare_entry(
+      "Preconditioner reuse",
+      default_reuse,
+      Patterns::Selection("every-matrix|across-steps"),
+      "every-matrix: the block preconditioner is built for every Jacobian; "
+      "across-steps: it is kept across Newton iterations and time steps "
+      "and rebuilt when a solve needs more than 1.25 n + 5 Krylov "
+      "iterations "
+      "(n: the count of the first solve after the last build), when a "
+      "solve fails and when the step size changes. The Jacobian itself is "
+      "always current, so the solution is the same to the Krylov "
+      "tolerance; the set-up (block extraction, Schur products, AMG and "
+      "multigrid hierarchies) is then paid every few steps instead of every "
+      "Newton iteration (method fgmres-block).");
     FlowBlockPreconditionerParameters::declare(prm);
     prm.leave_subsection();
   }
@@ -191,6 +206,7 @@ namespace vesicle_iga
   {
     prm.enter_subsection("Linear solver");
     parse_krylov_entries(prm, *this);
+    preconditioner_reuse = prm.get("Preconditioner reuse");
     block.parse(prm);
     prm.leave_subsection();
   }

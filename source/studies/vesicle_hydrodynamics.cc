@@ -515,7 +515,10 @@ namespace vesicle_iga
                           Patterns::Integer(-1),
                           "Continuity at the breakpoints (-1: C^{p-1}; at "
                           "least 2).");
-        LinearSolverParameters::declare_flow(prm, "fgmres-block", "1e-8");
+        LinearSolverParameters::declare_flow(prm,
+                                             "fgmres-block",
+                                             "1e-8",
+                                             "across-steps");
         prm.enter_subsection("Linear solver");
         prm.enter_subsection("Block preconditioner");
         PhaseFieldBlockParameters::declare(prm);

@@ -26,8 +26,15 @@ namespace vesicle_iga
    *    and when a solve needs more than 2 n_1 + 5 iterations, n_1 the count
    *    right after the last rebuild (the multigrid of the phase field:
    *    the matrix changes little between Newton iterations and the set-up
-   *    costs about two Krylov solves).
-   * A Krylov failure throws SolverFailure.
+   *    costs about two Krylov solves);
+   *  - across steps: kept from one Newton solve (time step) to the next
+   *    as long as the caller's step key (the rate factor of the time
+   *    integrator, which changes with the step size) is the one it was
+   *    built with, and rebuilt when a solve needs more than 1.25 n_1 + 5
+   *    iterations (the coupled vesicle-flow tangent at a fixed step: its
+   *    set-up costs as much as the solve).
+   * A Krylov failure throws SolverFailure and marks the preconditioner for
+   * a rebuild.
    */
   class JacobianSolver
   {
@@ -35,7 +42,8 @@ namespace vesicle_iga
     enum class Reuse
     {
       every_matrix,
-      while_effective
+      while_effective,
+      across_steps
     };
 
     /// @p timer (optional): sections "preconditioner" and "linear solve".
@@ -46,12 +54,14 @@ namespace vesicle_iga
       dealii::TimerOutput                             *timer = nullptr);
 
     /// A preconditioner of the caller's (required by the gmres-mg, cg-mg and
-    /// fgmres-block methods), its rebuild policy and what must happen
-    /// before each rebuild (e.g. the lumped operators of the flow blocks).
+    /// fgmres-block methods), its rebuild policy, what must happen
+    /// before each rebuild (e.g. the lumped operators of the flow blocks)
+    /// and, for Reuse::across_steps, the step key.
     void
     set_preconditioner(std::unique_ptr<MatrixPreconditioner> preconditioner,
                        const Reuse                           reuse,
-                       std::function<void()>                 before_setup = {});
+                       std::function<void()>                 before_setup = {},
+                       std::function<double()>               step_key     = {});
 
     dealii::TrilinosWrappers::SparseMatrix &
     matrix()
@@ -91,6 +101,8 @@ namespace vesicle_iga
     std::unique_ptr<MatrixPreconditioner>    caller_preconditioner;
     Reuse                                    reuse = Reuse::every_matrix;
     std::function<void()>                    before_setup;
+    std::function<double()>                  step_key;
+    double                                   key_at_setup     = 0;
     bool                                     stale            = true;
     unsigned int                             first_iterations = 0;
   };

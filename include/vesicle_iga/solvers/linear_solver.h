@@ -60,6 +60,10 @@ namespace vesicle_iga
     unsigned int                      max_iterations = 5000;
     SplineMultigridParameters         multigrid;
     FlowBlockPreconditionerParameters block;
+    /// When the caller's preconditioner of a time-dependent problem is
+    /// rebuilt (flow studies): "every-matrix" or "across-steps" (see
+    /// JacobianSolver::Reuse).
+    std::string preconditioner_reuse = "every-matrix";
 
     /// Whether the method needs a SplineMultigrid from the caller.
     bool
@@ -89,7 +93,8 @@ namespace vesicle_iga
     static void
     declare_flow(dealii::ParameterHandler &prm,
                  const std::string        &default_method,
-                 const std::string        &default_tolerance);
+                 const std::string        &default_tolerance,
+                 const std::string        &default_reuse = "every-matrix");
     void
     parse_flow(dealii::ParameterHandler &prm);
   };
