@@ -24,7 +24,7 @@ namespace vesicle_iga
     /// "spline-multigrid" or "amg" on each phase-field block.
     std::string preconditioner = "spline-multigrid";
     /// Smoother and sweeps of the phase-field spline multigrid.
-    std::string  smoother = "ssor";
+    std::string  smoother = "schwarz-ilu";
     unsigned int sweeps   = 2;
     /// Largest level solved by LU (0: the SplineMultigrid default).
     unsigned int coarse_size = 0;
