@@ -169,19 +169,33 @@ namespace vesicle_iga
               "dataset " + name);
     }
 
-    std::vector<double>
-    read_dataset(const hid_t file, const std::string &name)
+    /// The number of entries of the one-dimensional dataset @p name (a
+    /// "vector" or "field" of the checkpoint, for messages).
+    std::uint64_t
+    dataset_length(const hid_t        file,
+                   const std::string &name,
+                   const std::string &kind)
     {
       Handle  dataset(H5Dopen2(file, name.c_str(), H5P_DEFAULT),
                      H5Dclose,
-                     "its vector '" + name + "' is missing");
+                     "its " + kind + " '" + name + "' is missing");
       Handle  space(H5Dget_space(dataset), H5Sclose, "dataspace of " + name);
       hsize_t n = 0;
       if (H5Sget_simple_extent_ndims(space) != 1)
-        throw std::runtime_error("its vector '" + name + "' is not a vector");
+        throw std::runtime_error("its " + kind + " '" + name
+                                 + "' is not a vector");
       H5Sget_simple_extent_dims(space, &n, nullptr);
-      std::vector<double> v(n);
-      if (n > 0)
+      return n;
+    }
+
+    std::vector<double>
+    read_dataset(const hid_t file, const std::string &name)
+    {
+      std::vector<double> v(dataset_length(file, name, "vector"));
+      Handle              dataset(H5Dopen2(file, name.c_str(), H5P_DEFAULT),
+                     H5Dclose,
+                     "its vector '" + name + "' is missing");
+      if (!v.empty())
         check(H5Dread(dataset,
                       H5T_NATIVE_DOUBLE,
                       H5S_ALL,
@@ -190,21 +204,6 @@ namespace vesicle_iga
                       v.data()),
               "its vector '" + name + "' cannot be read (truncated file?)");
       return v;
-    }
-
-    /// The number of entries of the one-dimensional dataset @p name.
-    std::uint64_t
-    dataset_length(const hid_t file, const std::string &name)
-    {
-      Handle  dataset(H5Dopen2(file, name.c_str(), H5P_DEFAULT),
-                     H5Dclose,
-                     "its field '" + name + "' is missing");
-      Handle  space(H5Dget_space(dataset), H5Sclose, "dataspace of " + name);
-      hsize_t n = 0;
-      if (H5Sget_simple_extent_ndims(space) != 1)
-        throw std::runtime_error("its field '" + name + "' is not a vector");
-      H5Sget_simple_extent_dims(space, &n, nullptr);
-      return n;
     }
 
     /// The storage of a field of @p n values: contiguous, allocated when
@@ -517,7 +516,7 @@ namespace vesicle_iga
     if (H5Aexists(file, "field_names") > 0)
       for (const auto &name : Utilities::split_string_list(
              read_string_attribute(file, "field_names"), ','))
-        c.fields[name].size = dataset_length(file, name);
+        c.fields[name].size = dataset_length(file, name, "field");
     for (const auto &name : Utilities::split_string_list(
            read_string_attribute(file, "scalar_names"), ','))
       c.scalars[name] = read_double_attribute(file, name);

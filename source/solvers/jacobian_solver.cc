@@ -66,6 +66,29 @@ namespace vesicle_iga
                 parameters.method,
                 "a method this study offers (gmres-mg and cg-mg serve the "
                 "phase-field solvers, fgmres-block the flow solver)");
+    // A preconditioner kept from an earlier matrix that fails is built for
+    // this matrix and the solve is tried once more before the failure
+    // counts (which would cost the time step a smaller step size).
+    const bool kept = caller_preconditioner && !stale;
+    if (!kept)
+      return solve_once(x, b);
+    const TrilinosWrappers::MPI::Vector guess(x);
+    try
+      {
+        return solve_once(x, b);
+      }
+    catch (const SolverFailure &)
+      {
+        x = guess;
+        return solve_once(x, b);
+      }
+  }
+
+
+  LinearSolveResult
+  JacobianSolver::solve_once(TrilinosWrappers::MPI::Vector       &x,
+                             const TrilinosWrappers::MPI::Vector &b)
+  {
     std::optional<TimerOutput::Scope> scope;
     if (caller_preconditioner && stale)
       {

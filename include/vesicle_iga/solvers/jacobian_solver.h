@@ -33,8 +33,9 @@ namespace vesicle_iga
    *    built with, and rebuilt when a solve needs more than 1.25 n_1 + 5
    *    iterations (the coupled vesicle-flow tangent at a fixed step: its
    *    set-up costs as much as the solve).
-   * A Krylov failure throws SolverFailure and marks the preconditioner for
-   * a rebuild.
+   * A Krylov failure with a preconditioner built for an earlier matrix is
+   * retried once with one built for the current matrix; a failure then
+   * throws SolverFailure.
    */
   class JacobianSolver
   {
@@ -94,6 +95,12 @@ namespace vesicle_iga
     }
 
   private:
+    /// One attempt: builds the preconditioner if it is stale (a failure
+    /// marks it so), then solves.
+    LinearSolveResult
+    solve_once(dealii::TrilinosWrappers::MPI::Vector       &x,
+               const dealii::TrilinosWrappers::MPI::Vector &b);
+
     const LinearSolverParameters             parameters;
     const dealii::AffineConstraints<double> &increment_constraints;
     dealii::TimerOutput                     *timer;
