@@ -1,3 +1,4 @@
+#include <vesicle_iga/postprocess/edge_root.h>
 #include <vesicle_iga/postprocess/zero_contour.h>
 
 #include <algorithm>
@@ -179,31 +180,11 @@ namespace vesicle_iga
             a                    = Point<2>(x[i], y[j]);
             b                    = Point<2>(x[i], y[j + 1]);
           }
-        double t0 = 0, t1 = 1, f0 = value(a), f1 = value(b), t = 0.5;
-        int    side = 0;
-        for (unsigned int it = 0; it < 60; ++it)
-          {
-            t              = (t0 * f1 - t1 * f0) / (f1 - f0);
-            const double f = value(a + t * (b - a));
-            if (std::abs(f) <= tolerance || t1 - t0 < 1e-15)
-              break;
-            if ((f >= 0) == (f0 >= 0))
-              {
-                t0 = t;
-                f0 = f;
-                if (side == -1)
-                  f1 /= 2;
-                side = -1;
-              }
-            else
-              {
-                t1 = t;
-                f1 = f;
-                if (side == 1)
-                  f0 /= 2;
-                side = 1;
-              }
-          }
+        const double t
+          = edge_root([&](const double t) { return value(a + t * (b - a)); },
+                      value(a),
+                      value(b),
+                      tolerance);
         return a + t * (b - a);
       }
 

@@ -21,6 +21,7 @@
 #include <vesicle_iga/physics/vesicle_shape.h>
 #include <vesicle_iga/postprocess/level_set_extent.h>
 #include <vesicle_iga/postprocess/zero_contour.h>
+#include <vesicle_iga/postprocess/zero_set_measures.h>
 #include <vesicle_iga/spline/box_space_parameters.h>
 #include <vesicle_iga/studies/study.h>
 #include <vesicle_iga/time/time_loop.h>
@@ -101,8 +102,10 @@ namespace vesicle_iga
       level_set_measures() const;
 
       /// 2D: length, enclosed area and reduced area 4 pi A / L^2 of the
-      /// longest closed piece of the zero level set (the sharp measures
-      /// that the diffuse (E9) approximate; issue 16, item 1).
+      /// longest closed piece of the zero level set; 3D: area of the zero
+      /// surface, volume of {phi < 0} and reduced volume 6 sqrt(pi) V /
+      /// A^(3/2) (the sharp measures that the diffuse (E9) approximate;
+      /// issue 16, item 1).
       std::array<double, 3>
       zero_level_set_geometry(const std::vector<double> &natural) const;
 
@@ -147,6 +150,11 @@ namespace vesicle_iga
         for (const char *n :
              {"contour_length", "contour_area", "contour_reduced_area"})
           c.emplace_back(n);
+      else
+        for (const char *n : {"zero_surface_area",
+                              "zero_surface_volume",
+                              "zero_surface_reduced_volume"})
+          c.emplace_back(n);
       c.emplace_back("interface_speed");
       for (unsigned int d = 0; d < dim; ++d)
         c.push_back(std::string("drift_velocity_") + "xyz"[d]);
@@ -154,9 +162,16 @@ namespace vesicle_iga
         {
           for (const auto &n : model.energy_names())
             c.push_back(n + "_eV");
+          // The change of the total energy over a step, split into the
+          // step with psi frozen (what the step minimises, never positive)
+          // and the update of psi that follows (either sign: psi solves
+          // (E16) with sigma(phi), which does not make the electric
+          // energies (E7), (E8) stationary in psi; issue 16, item 3).
           for (const char *n : {"total_energy_eV",
                                 "potential_iterations",
-                                "field_axis_midpoint"})
+                                "field_axis_midpoint",
+                                "frozen_step_energy_change",
+                                "potential_update_energy_change"})
             c.emplace_back(n);
         }
       return c;
@@ -185,9 +200,8 @@ namespace vesicle_iga
       if (!natural.empty())
         {
           m = extents(natural);
-          if (dim == 2)
-            for (const double g : zero_level_set_geometry(natural))
-              m.push_back(g);
+          for (const double g : zero_level_set_geometry(natural))
+            m.push_back(g);
           if (model.potential())
             {
               const auto x
@@ -217,6 +231,12 @@ namespace vesicle_iga
                        std::abs(piece.enclosed_area()),
                        piece.reduced_area()}};
         }
+      else
+        {
+          const ZeroSetMeasures m
+            = zero_set_measures(model.get_dofs().get_space(), c, 1, 0, 4);
+          return {{m.boundary, m.inside, m.reduced(dim)}};
+        }
       return {{0., 0., 0.}};
     }
 
@@ -235,6 +255,8 @@ namespace vesicle_iga
         max_constraint_error = std::max(
           {max_constraint_error, std::abs(area_error), std::abs(volume_error)});
       // The step minimises E(phi, psi^n): measured with psi frozen.
+      const double frozen_step_change      = frozen.energy - previous.energy;
+      const double potential_update_change = f.energy - frozen.energy;
       max_energy_increase
         = std::max(max_energy_increase,
                    (frozen.energy - previous.energy) / energy_scale(f));
@@ -255,7 +277,7 @@ namespace vesicle_iga
       // One gather of the solution for all level-set measures of the step.
       const auto   measures = level_set_measures();
       unsigned int measure  = 0;
-      for (; measure < (dim == 2 ? dim + 3 : dim); ++measure)
+      for (; measure < dim + 3; ++measure)
         row.push_back(measures[measure]);
       const auto motion = model.interface_motion(info.dt);
       speed             = motion.speed;
@@ -269,6 +291,8 @@ namespace vesicle_iga
           row.push_back(material.to_eV(f.energy));
           row.push_back(model.take_potential_iterations());
           row.push_back(measures[measure]);
+          row.push_back(frozen_step_change / s.kappa);
+          row.push_back(potential_update_change / s.kappa);
         }
       progress << " E/kappa=" << f.energy / s.kappa
                << " area_error=" << area_error
