@@ -24,8 +24,9 @@
 #include <cmath>
 #include <fstream>
 #include <iostream>
-#include <map>
 #include <sstream>
+
+#include "../time_series_comparison.h"
 
 int
 main(int argc, char *argv[])
@@ -75,28 +76,11 @@ end
     return 0;
 
   // The time series by column name.
-  std::ifstream csv("adaptive-results/time-series.csv");
-  std::string   line;
-  std::getline(csv, line);
-  std::map<std::string, std::size_t> column;
-  {
-    std::stringstream header(line);
-    std::string       name;
-    for (std::size_t k = 0; std::getline(header, name, ','); ++k)
-      column[name] = k;
-  }
-  std::vector<std::vector<double>> rows;
-  while (std::getline(csv, line))
-    {
-      std::stringstream   s(line);
-      std::string         v;
-      std::vector<double> row;
-      while (std::getline(s, v, ','))
-        row.push_back(std::stod(v));
-      rows.push_back(row);
-    }
-  const auto at = [&](const std::size_t r, const std::string &name) {
-    return rows[r][column.at(name)];
+  const NamedTimeSeries series
+    = read_named_time_series("adaptive-results/time-series.csv");
+  const auto &rows = series.rows;
+  const auto  at   = [&](const std::size_t r, const std::string &name) {
+    return series.value(name, r);
   };
   double rejected = 0, worst_area = 0, worst_volume = 0, worst_rise = -1;
   double largest_dt = 0;
