@@ -163,9 +163,10 @@ namespace vesicle_iga
           for (const auto &n : model.energy_names())
             c.push_back(n + "_eV");
           // The change of the total energy over a step, split into the
-          // step with psi frozen (what the step minimises, never positive)
-          // and the update of psi that follows (either sign: psi solves
-          // (E16) with sigma(phi), which does not make the electric
+          // step with psi frozen (what the step minimises: it falls but for
+          // the work of the constraint multipliers within the ALM
+          // tolerance) and the update of psi that follows (either sign: psi
+          // solves (E16) with sigma(phi), which does not make the electric
           // energies (E7), (E8) stationary in psi; issue 16, item 3).
           for (const char *n : {"total_energy_eV",
                                 "potential_iterations",
@@ -258,8 +259,7 @@ namespace vesicle_iga
       const double frozen_step_change      = frozen.energy - previous.energy;
       const double potential_update_change = f.energy - frozen.energy;
       max_energy_increase
-        = std::max(max_energy_increase,
-                   (frozen.energy - previous.energy) / energy_scale(f));
+        = std::max(max_energy_increase, frozen_step_change / energy_scale(f));
       max_lagrangian_increase
         = std::max(max_lagrangian_increase,
                    (frozen.lagrangian - previous.lagrangian) / energy_scale(f));
