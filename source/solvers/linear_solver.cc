@@ -86,7 +86,10 @@ namespace vesicle_iga
 
 
   void
-  FlowBlockPreconditionerParameters::declare(ParameterHandler &prm)
+  FlowBlockPreconditionerParameters::declare(
+    ParameterHandler  &prm,
+    const std::string &default_velocity_smoother,
+    const std::string &default_velocity_sweeps)
   {
     prm.enter_subsection("Block preconditioner");
     prm.declare_entry(
@@ -101,13 +104,13 @@ namespace vesicle_iga
       "under refinement on spline spaces, doc/flow.md).");
     prm.declare_entry(
       "Velocity sweeps",
-      "3",
+      default_velocity_sweeps,
       Patterns::Integer(1),
       "Smoother sweeps (ssor, ilu, schwarz-ilu) or Chebyshev degree of "
       "the V-cycle on the velocity block (Method = "
       "fgmres-block).");
     prm.declare_entry("Velocity smoother",
-                      "chebyshev",
+                      default_velocity_smoother,
                       Patterns::Selection(
                         SplineMultigridParameters::smoother_names()),
                       "Smoother of the velocity spline multigrid: "
@@ -160,14 +163,12 @@ namespace vesicle_iga
 
 
   void
-  LinearSolverParameters::declare_flow(ParameterHandler  &prm,
-                                       const std::string &default_method,
-                                       const std::string &default_tolerance,
-                                       const std::string &default_reuse)
+  LinearSolverParameters::declare_flow(ParameterHandler         &prm,
+                                       const FlowSolverDefaults &defaults)
   {
     prm.enter_subsection("Linear solver");
     prm.declare_entry("Method",
-                      default_method,
+                      defaults.method,
                       Patterns::Selection(
                         "gmres-ilu|gmres-amg|direct|fgmres-block"),
                       "gmres-ilu: restarted GMRES with ILU(1) on each rank "
@@ -175,16 +176,16 @@ namespace vesicle_iga
                       "Trilinos ML AMG on the whole system; direct: MUMPS "
                       "sparse LU (Amesos, parallel); fgmres-block: "
                       "flexible GMRES with the block upper-triangular "
-                      "preconditioner (AMG on the velocity block and on the "
-                      "SIMPLE Schur complement C - D diag(A)^-1 B, "
-                      "doc/flow.md).");
+                      "preconditioner of the Block preconditioner subsection "
+                      "(a V-cycle on the velocity block, a Schur complement "
+                      "approximation on the pressure; doc/flow.md).");
     declare_krylov_entries(prm,
-                           default_tolerance,
+                           defaults.tolerance,
                            "fails the time step (which is then retried with "
                            "a smaller step)");
     prm.declare_entry(
       "Preconditioner reuse",
-      default_reuse,
+      defaults.reuse,
       Patterns::Selection("every-matrix|across-steps"),
       "every-matrix: the block preconditioner is built for every Jacobian; "
       "across-steps: it is kept across Newton iterations and time steps "
@@ -196,7 +197,9 @@ namespace vesicle_iga
       "tolerance; the set-up (block extraction, Schur products, AMG and "
       "multigrid hierarchies) is then paid every few steps instead of every "
       "Newton iteration (method fgmres-block).");
-    FlowBlockPreconditionerParameters::declare(prm);
+    FlowBlockPreconditionerParameters::declare(prm,
+                                               defaults.velocity_smoother,
+                                               defaults.velocity_sweeps);
     prm.leave_subsection();
   }
 

@@ -518,7 +518,9 @@ namespace vesicle_iga
         prm.enter_subsection(section);
         BoxSpaceParameters::declare(prm, "0", "1", "8");
         ConvergenceParameters::declare(prm, "2", "0", "1");
-        LinearSolverParameters::declare_flow(prm, "fgmres-block", "1e-10");
+        FlowSolverDefaults solver_defaults;
+        solver_defaults.tolerance = "1e-10";
+        LinearSolverParameters::declare_flow(prm, solver_defaults);
         prm.declare_entry("Reynolds number",
                           "100",
                           Patterns::Double(),

@@ -6,6 +6,11 @@
 #   log_peak_mb             the largest peak memory per rank (MB)
 #   log_sum NAME...          the summed wall time of several sections (s)
 #   series_counts DIR       "steps newton krylov" summed over DIR/time-series.csv
+# and sets the threads per rank: THREADS (default 1). deal.II's WorkStream
+# otherwise lets a rank that runs alone assemble on every core, and a
+# "1 rank" figure is then one of 2 cores (the 3D electromechanics Jacobian:
+# 26.9 s with one thread, 15.9 s with two; doc/performance.md).
+export DEAL_II_NUM_THREADS=${THREADS:-1}
 log_unknowns() { echo "$log" | sed -n 's/.* \([0-9]*\) unknowns.*/\1/p' | head -1; }
 log_total() { echo "$log" | sed -n 's/^| Total wallclock time elapsed since start *| *\([0-9.e+-]*\)s.*/\1/p'; }
 log_section() { echo "$log" | sed -n "s/^| $1 *| *[0-9]* | *\([0-9.e+-]*\)s.*/\1/p" | head -1; }

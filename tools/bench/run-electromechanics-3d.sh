@@ -10,7 +10,7 @@
 # peak memory per rank (MB, and bytes per unknown of a rank: peak / (unknowns /
 # ranks)). Times in seconds. Usage (after tools/build.sh):
 #   tools/bench/run-electromechanics-3d.sh [element counts, default "40 60"]
-# Environment: RANKS (default "1 2"); STEPS (default 1: the first step);
+# Environment: RANKS (default "1 2"); THREADS (log-fields.sh); STEPS (default 1: the first step);
 # EXTRA (parameter lines added to the file, e.g. another smoother) and TAG
 # (appended to the output directory names); OUTPUT=1 writes the VTU files
 # and the checkpoint at every step (the memory figures of doc/performance.md
@@ -33,7 +33,7 @@ if [[ "${OUTPUT:-0}" == 1 ]]; then
 end
 $EXTRA"
 fi
-echo "3D electromechanics (all energies, 50 kV/m), $STEPS step(s) of dt = 0.01; times in s"
+echo "3D electromechanics (all energies, 50 kV/m), $STEPS step(s) of dt = 0.01, $DEAL_II_NUM_THREADS thread(s) per rank; times in s"
 printf "%-6s %-5s %-8s %-6s %-6s %-4s %-4s %-7s %-10s %-9s %-9s %-9s %-9s %-9s %-7s %-9s\n" \
   cells ranks unknowns newton gmres alm cg set-up potential/sol assembly mg-setup gmres s/step s/newton peakMB B/unknown
 for n in $sizes; do

@@ -5,6 +5,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 source tools/mpi-env.sh
+source tools/bench/log-fields.sh  # one thread per rank (THREADS)
 for prm in poisson-2d-p2 poisson-2d-p3 poisson-3d-p2 poisson-3d-p3; do
   for np in 1 2; do
     echo "== $prm on $np rank(s)"

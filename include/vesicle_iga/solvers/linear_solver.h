@@ -34,10 +34,25 @@ namespace vesicle_iga
     /// "cahouet-chabard" or "simple" (see FlowBlockPreconditioner).
     std::string schur_approximation = "cahouet-chabard";
 
+    /// The defaults of the velocity smoother differ by study: Chebyshev
+    /// for the flow alone (doc/flow.md), the Schwarz ILU for vesicles in
+    /// the flow (doc/hydrodynamics.md).
     static void
-    declare(dealii::ParameterHandler &prm);
+    declare(dealii::ParameterHandler &prm,
+            const std::string        &default_velocity_smoother = "chebyshev",
+            const std::string        &default_velocity_sweeps   = "3");
     void
     parse(dealii::ParameterHandler &prm);
+  };
+
+  /// Defaults of a flow study's "Linear solver" subsection.
+  struct FlowSolverDefaults
+  {
+    std::string method            = "fgmres-block";
+    std::string tolerance         = "1e-8";
+    std::string reuse             = "every-matrix";
+    std::string velocity_smoother = "chebyshev";
+    std::string velocity_sweeps   = "3";
   };
 
   /**
@@ -92,9 +107,7 @@ namespace vesicle_iga
     /// the Multigrid one.
     static void
     declare_flow(dealii::ParameterHandler &prm,
-                 const std::string        &default_method,
-                 const std::string        &default_tolerance,
-                 const std::string        &default_reuse = "every-matrix");
+                 const FlowSolverDefaults &defaults);
     void
     parse_flow(dealii::ParameterHandler &prm);
   };
