@@ -189,14 +189,23 @@ namespace vesicle_iga
       Patterns::Selection("every-matrix|across-steps"),
       "every-matrix: the block preconditioner is built for every Jacobian; "
       "across-steps: it is kept across Newton iterations and time steps "
-      "and rebuilt when a solve needs more than 1.25 n + 5 Krylov "
-      "iterations "
-      "(n: the count of the first solve after the last build), when a "
-      "solve fails and when the step size changes. The Jacobian itself is "
-      "always current, so the solution is the same to the Krylov "
-      "tolerance; the set-up (block extraction, Schur products, AMG and "
-      "multigrid hierarchies) is then paid every few steps instead of every "
-      "Newton iteration (method fgmres-block).");
+      "and rebuilt once the solves since its build have needed 'Rebuild "
+      "after extra iterations' more Krylov iterations than the first of "
+      "them, when a solve fails and when the step size changes. The "
+      "Jacobian itself is always current, so the solution is the same to "
+      "the Krylov tolerance; the set-up (block extraction, Schur products, "
+      "AMG and multigrid hierarchies) is then paid every few steps "
+      "instead of every Newton iteration (method fgmres-block).");
+    prm.declare_entry(
+      "Rebuild after extra iterations",
+      "40",
+      Patterns::Integer(0),
+      "Preconditioner reuse = across-steps: the sum over the solves since "
+      "the last build of (iterations - iterations of the first solve) "
+      "that triggers a rebuild. About the cost of a build in Krylov "
+      "iterations (35-45 for the vesicle blocks of HD3 and the quick "
+      "doublet); 0 rebuilds whenever a solve needs more iterations than "
+      "the first.");
     FlowBlockPreconditionerParameters::declare(prm,
                                                defaults.velocity_smoother,
                                                defaults.velocity_sweeps);
@@ -210,6 +219,8 @@ namespace vesicle_iga
     prm.enter_subsection("Linear solver");
     parse_krylov_entries(prm, *this);
     preconditioner_reuse = prm.get("Preconditioner reuse");
+    rebuild_extra_iterations
+      = prm.get_integer("Rebuild after extra iterations");
     block.parse(prm);
     prm.leave_subsection();
   }

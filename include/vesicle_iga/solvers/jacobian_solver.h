@@ -30,9 +30,10 @@ namespace vesicle_iga
    *  - across steps: kept from one Newton solve (time step) to the next
    *    as long as the caller's step key (the rate factor of the time
    *    integrator, which changes with the step size) is the one it was
-   *    built with, and rebuilt when a solve needs more than 1.25 n_1 + 5
-   *    iterations (the coupled vesicle-flow tangent at a fixed step: its
-   *    set-up costs as much as the solve).
+   *    built with, and rebuilt once the solves since the build have
+   *    needed, in sum, LinearSolverParameters::rebuild_extra_iterations
+   *    more iterations than n_1 (the coupled vesicle-flow tangent at a
+   *    fixed step: its set-up costs as much as tens of iterations).
    * A Krylov failure with a preconditioner built for an earlier matrix is
    * retried once with one built for the current matrix; a failure then
    * throws SolverFailure.
@@ -112,5 +113,7 @@ namespace vesicle_iga
     double                                   key_at_setup     = 0;
     bool                                     stale            = true;
     unsigned int                             first_iterations = 0;
+    bool                                     first_counted    = false;
+    unsigned int                             extra_iterations = 0;
   };
 } // namespace vesicle_iga

@@ -79,6 +79,10 @@ namespace vesicle_iga
     /// rebuilt (flow studies): "every-matrix" or "across-steps" (see
     /// JacobianSolver::Reuse).
     std::string preconditioner_reuse = "every-matrix";
+    /// Reuse across steps: the preconditioner is rebuilt once the solves
+    /// since its build have needed, in sum, this many Krylov iterations
+    /// more than the first of them.
+    unsigned int rebuild_extra_iterations = 40;
 
     /// Whether the method needs a SplineMultigrid from the caller.
     bool
