@@ -97,8 +97,8 @@ namespace vesicle_iga
         if (before_setup)
           before_setup();
         caller_preconditioner->initialize(jacobian);
-        stale            = false;
-        first_counted    = false;
+        stale = false;
+        first_iterations.reset();
         extra_iterations = 0;
         key_at_setup     = step_key ? step_key() : 0.;
       }
@@ -131,21 +131,18 @@ namespace vesicle_iga
     // build add up to about a build's cost (35-45 FGMRES iterations on the
     // vesicle studies; a growth rule fired on counts as small as 3 -> 9
     // and rebuilt at every step, doc/hydrodynamics.md).
-    if (!first_counted)
-      {
-        first_iterations = result.iterations;
-        first_counted    = true;
-      }
+    if (!first_iterations)
+      first_iterations = result.iterations;
     else if (reuse == Reuse::across_steps)
       {
-        extra_iterations += result.iterations > first_iterations ?
-                              result.iterations - first_iterations :
+        extra_iterations += result.iterations > *first_iterations ?
+                              result.iterations - *first_iterations :
                               0;
         if (extra_iterations > parameters.rebuild_extra_iterations)
           stale = true;
       }
     else if (reuse == Reuse::while_effective
-             && result.iterations > 2 * first_iterations + 5)
+             && result.iterations > 2 * *first_iterations + 5)
       stale = true;
     return result;
   }

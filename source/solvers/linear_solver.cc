@@ -86,10 +86,8 @@ namespace vesicle_iga
 
 
   void
-  FlowBlockPreconditionerParameters::declare(
-    ParameterHandler  &prm,
-    const std::string &default_velocity_smoother,
-    const std::string &default_velocity_sweeps)
+  FlowBlockPreconditionerParameters::declare(ParameterHandler         &prm,
+                                             const FlowSolverDefaults &defaults)
   {
     prm.enter_subsection("Block preconditioner");
     prm.declare_entry(
@@ -104,13 +102,13 @@ namespace vesicle_iga
       "under refinement on spline spaces, doc/flow.md).");
     prm.declare_entry(
       "Velocity sweeps",
-      default_velocity_sweeps,
+      defaults.velocity_sweeps,
       Patterns::Integer(1),
       "Smoother sweeps (ssor, ilu, schwarz-ilu) or Chebyshev degree of "
       "the V-cycle on the velocity block (Method = "
       "fgmres-block).");
     prm.declare_entry("Velocity smoother",
-                      default_velocity_smoother,
+                      defaults.velocity_smoother,
                       Patterns::Selection(
                         SplineMultigridParameters::smoother_names()),
                       "Smoother of the velocity spline multigrid: "
@@ -206,9 +204,7 @@ namespace vesicle_iga
       "iterations (35-45 for the vesicle blocks of HD3 and the quick "
       "doublet); 0 rebuilds whenever a solve needs more iterations than "
       "the first.");
-    FlowBlockPreconditionerParameters::declare(prm,
-                                               defaults.velocity_smoother,
-                                               defaults.velocity_sweeps);
+    FlowBlockPreconditionerParameters::declare(prm, defaults);
     prm.leave_subsection();
   }
 

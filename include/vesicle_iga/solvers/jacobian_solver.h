@@ -11,6 +11,7 @@
 
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 
 namespace vesicle_iga
@@ -110,10 +111,10 @@ namespace vesicle_iga
     Reuse                                    reuse = Reuse::every_matrix;
     std::function<void()>                    before_setup;
     std::function<double()>                  step_key;
-    double                                   key_at_setup     = 0;
-    bool                                     stale            = true;
-    unsigned int                             first_iterations = 0;
-    bool                                     first_counted    = false;
-    unsigned int                             extra_iterations = 0;
+    double                                   key_at_setup = 0;
+    bool                                     stale        = true;
+    /// The count of the first solve after the last build, once made.
+    std::optional<unsigned int> first_iterations;
+    unsigned int                extra_iterations = 0;
   };
 } // namespace vesicle_iga

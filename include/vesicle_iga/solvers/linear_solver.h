@@ -12,6 +12,18 @@
 
 namespace vesicle_iga
 {
+  /// Defaults of a flow study's "Linear solver" subsection. The velocity
+  /// smoother differs by study: Chebyshev for the flow alone
+  /// (doc/flow.md), the Schwarz ILU for vesicles in the flow
+  /// (doc/hydrodynamics.md).
+  struct FlowSolverDefaults
+  {
+    std::string method            = "fgmres-block";
+    std::string tolerance         = "1e-8";
+    std::string reuse             = "every-matrix";
+    std::string velocity_smoother = "chebyshev";
+    std::string velocity_sweeps   = "3";
+  };
 
   /// Settings of the velocity-pressure block preconditioner
   /// (FlowBlockPreconditioner; subsection "Linear solver/Block
@@ -34,25 +46,12 @@ namespace vesicle_iga
     /// "cahouet-chabard" or "simple" (see FlowBlockPreconditioner).
     std::string schur_approximation = "cahouet-chabard";
 
-    /// The defaults of the velocity smoother differ by study: Chebyshev
-    /// for the flow alone (doc/flow.md), the Schwarz ILU for vesicles in
-    /// the flow (doc/hydrodynamics.md).
+    /// The entries, with the velocity smoother's defaults of @p defaults.
     static void
     declare(dealii::ParameterHandler &prm,
-            const std::string        &default_velocity_smoother = "chebyshev",
-            const std::string        &default_velocity_sweeps   = "3");
+            const FlowSolverDefaults &defaults = {});
     void
     parse(dealii::ParameterHandler &prm);
-  };
-
-  /// Defaults of a flow study's "Linear solver" subsection.
-  struct FlowSolverDefaults
-  {
-    std::string method            = "fgmres-block";
-    std::string tolerance         = "1e-8";
-    std::string reuse             = "every-matrix";
-    std::string velocity_smoother = "chebyshev";
-    std::string velocity_sweeps   = "3";
   };
 
   /**
