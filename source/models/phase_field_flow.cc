@@ -33,7 +33,13 @@ namespace vesicle_iga
     , rate({0})
     , assembler(dofs, QGauss<1>(p.quadrature_points))
     , newton(p.newton)
-    , alm(1., 1., p.constraint_tolerance, p.max_alm_iterations)
+    , alm(1.,
+          1.,
+          p.constraint_tolerance,
+          p.max_alm_iterations,
+          p.alm_first_update == "predicted drift" ?
+            ModifiedALM::FirstUpdate::predicted_drift :
+            ModifiedALM::FirstUpdate::carried_error)
   {
     // One pattern for the Jacobian and the potential's matrix: they share
     // its graph.
@@ -201,6 +207,8 @@ namespace vesicle_iga
     alm_alpha         = alm.alpha();
     alm_beta          = alm.beta();
     alm_inverse       = alm.inverse_jacobian();
+    alm_inverse_dt    = alm.inverse_jacobian_step_size();
+    step_size         = dt;
     StepReport report = constrained_step(dt);
     // Fixed-point coupling (spec 3.9 option): psi from phi_{n+1}, and the
     // step again from phi_n, until psi settles.
@@ -217,7 +225,7 @@ namespace vesicle_iga
             || ++fixed_point_iterations
                  >= parameters.max_fixed_point_iterations)
           break;
-        alm.set_state(alm_alpha, alm_beta, alm_inverse);
+        alm.set_state(alm_alpha, alm_beta, alm_inverse, alm_inverse_dt);
         const StepReport again = constrained_step(dt);
         report.newton_iterations += again.newton_iterations;
         report.krylov_iterations += again.krylov_iterations;
@@ -267,7 +275,7 @@ namespace vesicle_iga
       T = linearised_alm_inverse(dt, T);
       return true;
     };
-    const auto r       = alm.step(solve, current.volume, current.area, refresh);
+    const auto r = alm.step(solve, current.volume, current.area, dt, refresh);
     report.counters[0] = r.iterations;
     if (!r.converged)
       {
@@ -330,7 +338,8 @@ namespace vesicle_iga
   PhaseFieldFlow<dim>::accept_step()
   {
     stepper->accept_step();
-    const bool staggered = electric && parameters.coupling != "fixed-point";
+    const Functionals before = current;
+    const bool staggered     = electric && parameters.coupling != "fixed-point";
     // The step minimises E(phi, psi^n) with psi^n frozen (spec 3.9), so
     // that is the energy that must not rise over it: measured before psi
     // is updated. psi^{n+1} from the accepted phase field is the potential
@@ -343,6 +352,9 @@ namespace vesicle_iga
     current = functionals(solution());
     if (!staggered)
       frozen = current;
+    alm.record_accepted_step(current.volume - before.volume,
+                             current.area - before.area,
+                             step_size);
   }
 
 
@@ -350,7 +362,7 @@ namespace vesicle_iga
   void
   PhaseFieldFlow<dim>::reject_step()
   {
-    alm.set_state(alm_alpha, alm_beta, alm_inverse);
+    alm.set_state(alm_alpha, alm_beta, alm_inverse, alm_inverse_dt);
     if (electric && parameters.coupling == "fixed-point")
       solve_potential(solution());
   }

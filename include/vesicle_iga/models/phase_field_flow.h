@@ -28,7 +28,9 @@ namespace vesicle_iga
   {
     double kappa = 1, epsilon = 0.1, spontaneous_curvature = 0;
     /// alm (spec 3.8), penalty or none.
-    std::string  constraint_method = "alm", alm_jacobian = "linearised";
+    std::string constraint_method = "alm", alm_jacobian = "linearised";
+    /// carried error (Algorithm 1) or predicted drift (ModifiedALM).
+    std::string  alm_first_update = "predicted drift";
     double       M1 = 1, M2 = 1, constraint_tolerance = 1e-4;
     unsigned int max_alm_iterations = 20;
     /// staggered (spec 3.9) or fixed-point.
@@ -232,5 +234,8 @@ namespace vesicle_iga
     unsigned int                                  potential_iterations = 0;
     double                                        alm_alpha = 0, alm_beta = 0;
     std::array<double, 4>                         alm_inverse{};
+    double                                        alm_inverse_dt = 0;
+    /// Size of the step being solved (ModifiedALM::record_accepted_step).
+    double step_size = 0;
   };
 } // namespace vesicle_iga
