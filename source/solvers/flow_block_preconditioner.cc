@@ -18,6 +18,7 @@ namespace vesicle_iga
     : dim(dim)
     , prm(prm)
     , cahouet_chabard(prm.schur_approximation == "cahouet-chabard")
+    , direct_control(1, 0.)
   {}
 
 
@@ -41,6 +42,13 @@ namespace vesicle_iga
   FlowBlockPreconditioner::initialize(
     const TrilinosWrappers::SparseMatrix &matrix)
   {
+    if (prm.schur_approximation == "direct")
+      {
+        direct
+          = std::make_unique<TrilinosWrappers::SolverDirect>(direct_control);
+        direct->initialize(matrix);
+        return;
+      }
     const MPI_Comm     comm    = matrix.get_mpi_communicator();
     const IndexSet    &owned   = matrix.locally_owned_range_indices();
     const unsigned int nc      = dim + 1;
@@ -185,6 +193,11 @@ namespace vesicle_iga
   FlowBlockPreconditioner::vmult(TrilinosWrappers::MPI::Vector       &dst,
                                  const TrilinosWrappers::MPI::Vector &src) const
   {
+    if (direct)
+      {
+        direct->solve(dst, src);
+        return;
+      }
     // P^{-1} = [A B; 0 S]^{-1}: p = S^{-1} r_p, u = A^{-1} (r_u - B p).
     split(src, r_u, r_p);
     S_inverse.vmult(p, r_p);
@@ -215,6 +228,8 @@ namespace vesicle_iga
   FlowBlockPreconditioner::description() const
   {
     std::ostringstream s;
+    if (prm.schur_approximation == "direct")
+      return "sparse LU of the velocity-pressure block";
     s << "block upper-triangular: "
       << (velocity_preconditioner ? velocity_preconditioner->description() :
                                     std::string("AMG"))

@@ -135,12 +135,15 @@ namespace vesicle_iga
     prm.declare_entry(
       "Schur approximation",
       "cahouet-chabard",
-      Patterns::Selection("cahouet-chabard|simple"),
+      Patterns::Selection("cahouet-chabard|simple|direct"),
       "cahouet-chabard: S^-1 = (lumped viscous pressure mass)^-1 + "
       "(C - D M_L^-1 B)^-1 with M_L the lumped velocity mass; iteration "
       "counts independent of the mesh from Stokes to transient flows. "
       "simple: S = C - D diag(A)^-1 B (grows with refinement in viscous "
-      "flows; kept for comparison).");
+      "flows; kept for comparison). direct: no approximation, the whole "
+      "velocity-pressure block by sparse LU (Amesos KLU; the velocity "
+      "settings are unused): a diagnostic that shows the Krylov iterations "
+      "the two approximations cost, far too slow and large for runs.");
     prm.leave_subsection();
   }
 

@@ -2,7 +2,9 @@
 
 #include <deal.II/base/index_set.h>
 
+#include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/trilinos_precondition.h>
+#include <deal.II/lac/trilinos_solver.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
@@ -55,6 +57,8 @@ namespace vesicle_iga
    *  - simple: S = C - D diag(A)^{-1} B, fully algebraic; in viscous flows
    *    diag(A) ~ nu / h^2 makes S too small for smooth pressures and the
    *    count doubles per refinement (measured in doc/flow.md).
+   *  - direct: no block approximation, the whole matrix by sparse LU; a
+   *    diagnostic of what the approximations cost (doc/hydrodynamics.md).
    *
    * The lumped operators come from RBVMSLumpedSchurOperators, in the
    * monolithic layout, through set_lumped_operators() before initialize().
@@ -109,5 +113,7 @@ namespace vesicle_iga
     std::unique_ptr<MatrixPreconditioner>         velocity_preconditioner;
     mutable dealii::TrilinosWrappers::MPI::Vector u, p, r_u, r_p, tmp_u;
     bool                                          cahouet_chabard;
+    dealii::SolverControl                         direct_control;
+    std::unique_ptr<dealii::TrilinosWrappers::SolverDirect> direct;
   };
 } // namespace vesicle_iga
