@@ -329,6 +329,8 @@ namespace vesicle_iga
     , volume_0(n_vesicles)
     , lambda_g(n_vesicles)
     , lambda_v(n_vesicles)
+    , lambda_g_rate(n_vesicles)
+    , lambda_v_rate(n_vesicles)
   {
     for (unsigned int k = 0; k < 2; ++k)
       if (space.knot_vector(k).is_periodic())
@@ -707,8 +709,12 @@ namespace vesicle_iga
                     ExcMessage("(H13) is singular for vesicle "
                                + std::to_string(i + 1)
                                + ": f is constant (no interface)"));
-        lambda_v[i] = (s[2] * b_v - s[1] * b_g) / det;
-        lambda_g[i] = (s[0] * b_g - s[9] * b_v) / det;
+        const double v   = (s[2] * b_v - s[1] * b_g) / det;
+        const double g   = (s[0] * b_g - s[9] * b_v) / det;
+        lambda_v_rate[i] = dt > 0 ? (v - lambda_v[i]) / dt : 0.;
+        lambda_g_rate[i] = dt > 0 ? (g - lambda_g[i]) / dt : 0.;
+        lambda_v[i]      = v;
+        lambda_g[i]      = g;
         constraint[i]->get_formula().set_multipliers(lambda_g[i], lambda_v[i]);
       }
   }
@@ -719,6 +725,16 @@ namespace vesicle_iga
   VesicleHydrodynamics<dim>::solve_step(const double dt)
   {
     last_dt = dt;
+    // (H13) gives the multipliers that hold V_i, A_i at the state of t_n;
+    // a step with them lags them by dt, which leaves an area error of
+    // order dt per step (relaxed only at eta_phi / 2 per step).
+    // Extrapolated to t_{n+1} by their rate over the last step, the lag is
+    // of order dt^2.
+    const double ahead = membrane.extrapolated_multipliers ? dt : 0.;
+    for (unsigned int i = 0; i < n; ++i)
+      constraint[i]->get_formula().set_multipliers(
+        lambda_g[i] + ahead * lambda_g_rate[i],
+        lambda_v[i] + ahead * lambda_v_rate[i]);
     return flow_model->solve_step(dt);
   }
 
@@ -738,10 +754,12 @@ namespace vesicle_iga
                                   const std::string &prefix) const
   {
     flow_model->save(c, prefix + ".flow");
-    c.vectors[prefix + ".initial_areas"]      = area_0;
-    c.vectors[prefix + ".initial_volumes"]    = volume_0;
-    c.vectors[prefix + ".area_multipliers"]   = lambda_g;
-    c.vectors[prefix + ".volume_multipliers"] = lambda_v;
+    c.vectors[prefix + ".initial_areas"]           = area_0;
+    c.vectors[prefix + ".initial_volumes"]         = volume_0;
+    c.vectors[prefix + ".area_multipliers"]        = lambda_g;
+    c.vectors[prefix + ".volume_multipliers"]      = lambda_v;
+    c.vectors[prefix + ".area_multiplier_rates"]   = lambda_g_rate;
+    c.vectors[prefix + ".volume_multiplier_rates"] = lambda_v_rate;
   }
 
 
@@ -765,6 +783,14 @@ namespace vesicle_iga
     get("initial_volumes", volume_0);
     get("area_multipliers", lambda_g);
     get("volume_multipliers", lambda_v);
+    // Checkpoints written before the rates were kept: none (lagged once).
+    lambda_g_rate.assign(n, 0.);
+    lambda_v_rate.assign(n, 0.);
+    if (c.vectors.count(prefix + ".area_multiplier_rates"))
+      {
+        get("area_multiplier_rates", lambda_g_rate);
+        get("volume_multiplier_rates", lambda_v_rate);
+      }
     for (unsigned int i = 0; i < n; ++i)
       constraint[i]->get_formula().set_multipliers(lambda_g[i], lambda_v[i]);
   }

@@ -221,6 +221,8 @@ namespace vesicle_iga
       membrane.interaction        = prm.get_bool("Interaction");
       membrane.membrane_volume_multiplier
         = prm.get("Volume multiplier") == "membrane";
+      membrane.extrapolated_multipliers
+        = prm.get("Global multipliers") == "extrapolated";
       membrane.mobility           = prm.get_double("Mobility");
       membrane.inextensibility_xi = prm.get_double("Inextensibility xi");
       membrane.viscosity_ratio    = prm.get_double("Viscosity ratio");
@@ -548,6 +550,18 @@ namespace vesicle_iga
                           Patterns::Bool(),
                           "Whether the interaction energy (H10) acts "
                           "between the vesicles.");
+        prm.declare_entry(
+          "Global multipliers",
+          "extrapolated",
+          Patterns::Selection("extrapolated|lagged"),
+          "The values of lambda_g,i and lambda_v,i a step uses. (H13) "
+          "gives them from the state at the start of the step. lagged: "
+          "those values (the source); the constraint drift then grows by "
+          "about dt times the multipliers' rate of change per step. "
+          "extrapolated: those values plus dt times their rate over the "
+          "last accepted step (the multipliers at the end of the step); on "
+          "prm/doublet-shear-quick.prm the area error after 30 steps falls "
+          "from 0.77 % to 0.11 % (doc/hydrodynamics.md).");
         prm.declare_entry(
           "Volume multiplier",
           "membrane",

@@ -214,6 +214,8 @@ namespace vesicle_iga
     std::vector<std::unique_ptr<TensionLumpedSchur<dim>>>      tension_schur;
     std::unique_ptr<IncompressibleFlow<dim>>                   flow_model;
     std::vector<double> area_0, volume_0, lambda_g, lambda_v;
+    /// d lambda / dt over the last accepted step (zero before the first).
+    std::vector<double> lambda_g_rate, lambda_v_rate;
     double              last_dt = 0;
     PeriodicBox         periodic_box;
     /// Per locally owned unknown: whether it is a phase field.

@@ -31,6 +31,12 @@ namespace vesicle_iga
     /// volume between the far field and the vesicle (doc/hydrodynamics.md,
     /// "Volume multiplier").
     bool membrane_volume_multiplier = true;
+    /// Which values of the global multipliers a step uses: true (this
+    /// project's default) the (H13) values of the last accepted step
+    /// extrapolated linearly to the end of the step, false the (H13)
+    /// values themselves, lagged by a step as in the source
+    /// (doc/hydrodynamics.md, "Global multipliers in time").
+    bool extrapolated_multipliers = true;
 
     /// 1 / (Re Ca), the factor of the bending force (H3).
     double
