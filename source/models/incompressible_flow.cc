@@ -270,7 +270,7 @@ namespace vesicle_iga
       whole = std::move(preconditioner);
     LumpedOperatorPreconditioner *target = whole.get();
     std::function<void()>         lumped_operators;
-    if (block.schur_approximation != "simple" || coupling)
+    if (block.schur_approximation == "cahouet-chabard" || coupling)
       {
         schur_assembler
           = std::make_unique<SystemAssembler<dim>>(dof_handler,
