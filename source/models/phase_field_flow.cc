@@ -204,10 +204,7 @@ namespace vesicle_iga
   StepReport
   PhaseFieldFlow<dim>::solve_step(const double dt)
   {
-    alm_alpha         = alm.alpha();
-    alm_beta          = alm.beta();
-    alm_inverse       = alm.inverse_jacobian();
-    alm_inverse_dt    = alm.inverse_jacobian_step_size();
+    alm_at_step_start = alm;
     step_size         = dt;
     StepReport report = constrained_step(dt);
     // Fixed-point coupling (spec 3.9 option): psi from phi_{n+1}, and the
@@ -225,7 +222,7 @@ namespace vesicle_iga
             || ++fixed_point_iterations
                  >= parameters.max_fixed_point_iterations)
           break;
-        alm.set_state(alm_alpha, alm_beta, alm_inverse, alm_inverse_dt);
+        alm                    = *alm_at_step_start;
         const StepReport again = constrained_step(dt);
         report.newton_iterations += again.newton_iterations;
         report.krylov_iterations += again.krylov_iterations;
@@ -362,7 +359,7 @@ namespace vesicle_iga
   void
   PhaseFieldFlow<dim>::reject_step()
   {
-    alm.set_state(alm_alpha, alm_beta, alm_inverse, alm_inverse_dt);
+    alm = *alm_at_step_start;
     if (electric && parameters.coupling == "fixed-point")
       solve_potential(solution());
   }

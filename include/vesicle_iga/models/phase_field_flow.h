@@ -18,6 +18,7 @@
 #include <vesicle_iga/time/time_loop.h>
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -232,9 +233,9 @@ namespace vesicle_iga
     double                                        V0 = 0, A0 = 0;
     Functionals                                   current, frozen;
     unsigned int                                  potential_iterations = 0;
-    double                                        alm_alpha = 0, alm_beta = 0;
-    std::array<double, 4>                         alm_inverse{};
-    double                                        alm_inverse_dt = 0;
+    /// The ALM as the step found it (a rejected step or a fixed-point
+    /// repetition starts from it again).
+    std::optional<ModifiedALM> alm_at_step_start;
     /// Size of the step being solved (ModifiedALM::record_accepted_step).
     double step_size = 0;
   };

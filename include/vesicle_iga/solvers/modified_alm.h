@@ -23,9 +23,10 @@ namespace vesicle_iga
    * with the multipliers of (E19) held, (V, A) moves over the step by
    * about dt times the rate of the last step, so one-iteration steps leave
    * an error proportional to dt; with an exact T^{-1} and equal steps the
-   * errors of successive one-iteration steps follow e_{n+1} = e_n -
-   * e_{n-1}, an undamped oscillation of period six steps (doc/validation.md
-   * section 5).
+   * errors of successive one-iteration steps follow e_{n+1} = (I - C)
+   * (e_n - e_{n-1}), C = dt K diag(M1, M2) the small response of the step
+   * to the multipliers: an oscillation of period about six steps that only
+   * C damps (doc/validation.md section 5, tests/solvers/modified_alm).
    * FirstUpdate::predicted_drift (not in the source) aims the first
    * update at the predicted end-of-step values instead: the multipliers
    * (E19) of the last accepted step are kept (alpha, beta shifted by that
@@ -138,22 +139,6 @@ namespace vesicle_iga
       be   = beta;
       Tinv = T_inverse;
     }
-    /// As above, with the step size @p dt the inverse belongs to (0:
-    /// none).
-    void
-    set_state(const double                 alpha,
-              const double                 beta,
-              const std::array<double, 4> &T_inverse,
-              const double                 dt)
-    {
-      set_state(alpha, beta, T_inverse);
-      inverse_dt = dt;
-    }
-    double
-    inverse_jacobian_step_size() const
-    {
-      return inverse_dt;
-    }
     const std::array<double, 4> &
     inverse_jacobian() const
     {
@@ -179,7 +164,7 @@ namespace vesicle_iga
     /// (dt = 0: none since the start or the last new targets).
     std::array<double, 3> last_step{{0, 0, 0}};
     /// The step size Tinv was estimated at (0: the identity of the start;
-    /// only kept with FirstUpdate::predicted_drift).
+    /// used only by FirstUpdate::predicted_drift).
     double inverse_dt = 0;
   };
 } // namespace vesicle_iga
