@@ -424,6 +424,14 @@ namespace vesicle_iga
 
   template <int dim>
   void
+  IncompressibleFlow<dim>::drop_unsaved_state()
+  {
+    linear->forget_jacobian();
+  }
+
+
+  template <int dim>
+  void
   IncompressibleFlow<dim>::load(const Checkpoint &c, const std::string &prefix)
   {
     stepper->load(c, prefix + ".stepper");

@@ -299,6 +299,13 @@ namespace vesicle_iga
     // with unit multiplier), dphi_{n+1}/dLambda_X = -gamma dt K^{-1} g_X,
     // dV/dLambda_X = g_V . dphi_{n+1}/dLambda_X (likewise A), and (E19)
     // gives dLambda_V/dalpha = -M1, dLambda_A/dbeta = -M2.
+    // With full Newton the matrix is the tangent at the last iterate but
+    // one; a Jacobian kept across solves may be steps old, and T from it
+    // moved the ALM iterates (E_B by 2e-4 relative after two 3D steps,
+    // doc/performance.md): assembled at the solution instead, it then
+    // serves the next Newton solve as a fresh one.
+    if (newton.get_parameters().keep_jacobian)
+      stepper->assemble_jacobian_at_solution();
     TimerOutput::Scope    t(timer, "ALM Jacobian");
     VolumeConstraint<dim> unit_volume(0);
     AreaConstraint<dim>   unit_area(0, parameters.epsilon);
@@ -500,6 +507,14 @@ namespace vesicle_iga
     alm.save(c, prefix + ".alm");
     c.scalars[prefix + ".area_multiplier"]   = area.multiplier();
     c.scalars[prefix + ".volume_multiplier"] = volume.multiplier();
+  }
+
+
+  template <int dim>
+  void
+  PhaseFieldFlow<dim>::drop_unsaved_state()
+  {
+    linear->forget_jacobian();
   }
 
 

@@ -765,6 +765,14 @@ namespace vesicle_iga
 
   template <int dim>
   void
+  VesicleHydrodynamics<dim>::drop_unsaved_state()
+  {
+    flow_model->drop_unsaved_state();
+  }
+
+
+  template <int dim>
+  void
   VesicleHydrodynamics<dim>::load(const Checkpoint  &c,
                                   const std::string &prefix)
   {

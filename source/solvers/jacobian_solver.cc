@@ -39,8 +39,18 @@ namespace vesicle_iga
 
 
   void
-  JacobianSolver::matrix_changed(const bool first_of_solve)
+  JacobianSolver::count_correction()
   {
+    if (jacobian_corrections)
+      ++*jacobian_corrections;
+  }
+
+
+  void
+  JacobianSolver::matrix_changed(const bool first_of_solve, const double scale)
+  {
+    jacobian_corrections = 0;
+    jacobian_scale       = scale;
     switch (reuse)
       {
         case Reuse::every_matrix:

@@ -14,7 +14,9 @@ namespace vesicle_iga
   NewtonParameters::declare(ParameterHandler  &prm,
                             const std::string &default_max_iterations,
                             const std::string &default_relative_tolerance,
-                            const std::string &default_absolute_tolerance)
+                            const std::string &default_absolute_tolerance,
+                            const std::string &default_jacobian_interval,
+                            const std::string &default_keep_jacobian)
   {
     prm.enter_subsection("Newton");
     prm.declare_entry("Max iterations",
@@ -32,11 +34,31 @@ namespace vesicle_iga
                       Patterns::Double(0),
                       "Residual norm that counts as converged.");
     prm.declare_entry("Jacobian interval",
-                      "1",
+                      default_jacobian_interval,
                       Patterns::Integer(1),
-                      "1: a new Jacobian every Newton iteration; k > 1: the "
-                      "Jacobian (and its preconditioner) is kept for k "
-                      "iterations (lagged Jacobian).");
+                      "1: a new Jacobian every Newton iteration; k > 1: a "
+                      "Jacobian (and its preconditioner) serves up to k "
+                      "corrections (lagged Jacobian, a chord method), fewer "
+                      "when one of them reduces the residual by less than "
+                      "'Rebuild contraction'.");
+    prm.declare_entry("Keep Jacobian",
+                      default_keep_jacobian,
+                      Patterns::Bool(),
+                      "With 'Jacobian interval' > 1: a Newton solve (the "
+                      "next ALM iteration, the next time step) starts with "
+                      "the Jacobian the last solve left, while it has served "
+                      "fewer than 'Jacobian interval' corrections and the "
+                      "step size is within 20 % of the one it was assembled "
+                      "at, instead of assembling one. Pays where the "
+                      "Jacobian costs many residuals (the 3D phase field: "
+                      "doc/performance.md). A checkpoint drops it, so a "
+                      "restart continues exactly as the run would have.");
+    prm.declare_entry("Rebuild contraction",
+                      "0.1",
+                      Patterns::Double(0, 1),
+                      "A lagged Jacobian is rebuilt when the last correction "
+                      "made with it left more than this fraction of the "
+                      "residual.");
     prm.leave_subsection();
   }
 
@@ -45,10 +67,12 @@ namespace vesicle_iga
   NewtonParameters::parse(ParameterHandler &prm)
   {
     prm.enter_subsection("Newton");
-    max_iterations     = prm.get_integer("Max iterations");
-    relative_tolerance = prm.get_double("Relative tolerance");
-    absolute_tolerance = prm.get_double("Absolute tolerance");
-    jacobian_interval  = prm.get_integer("Jacobian interval");
+    max_iterations      = prm.get_integer("Max iterations");
+    relative_tolerance  = prm.get_double("Relative tolerance");
+    absolute_tolerance  = prm.get_double("Absolute tolerance");
+    jacobian_interval   = prm.get_integer("Jacobian interval");
+    keep_jacobian       = prm.get_bool("Keep Jacobian");
+    rebuild_contraction = prm.get_double("Rebuild contraction");
     prm.leave_subsection();
   }
 
@@ -92,12 +116,47 @@ namespace vesicle_iga
   NewtonSolver::solve(NonlinearProblem              &problem,
                       TrilinosWrappers::MPI::Vector &x) const
   {
+    JacobianSolver &linear = problem.jacobian_solver();
+    try
+      {
+        return iterate(problem, x);
+      }
+    catch (const SolverFailure &)
+      {
+        // The retry (a smaller step) starts from a Jacobian of its own.
+        linear.forget_jacobian();
+        throw;
+      }
+  }
+
+
+  NewtonReport
+  NewtonSolver::iterate(NonlinearProblem              &problem,
+                        TrilinosWrappers::MPI::Vector &x) const
+  {
     NewtonReport                  report;
     TrilinosWrappers::MPI::Vector residual(x);
     JacobianSolver               &linear = problem.jacobian_solver();
-    problem.assemble(x, &residual, true);
-    linear.matrix_changed(true);
-    unsigned int jacobian_age = 0;
+    const auto                    age    = linear.corrections_with_jacobian();
+    // A Jacobian from an earlier solve serves if it has corrections left
+    // and was assembled at about this scale (step size): with the rate as
+    // unknown, a step 20 % longer changes the stiffness part of
+    // alpha_m M + alpha_f gamma dt K by 20 %, and a chord iteration with
+    // that error contracts by no better than about 0.2 per correction (a
+    // step size that grows by 1.6 per step, as the controller's does early
+    // on, made every kept Jacobian a wasted correction).
+    const double scale      = problem.jacobian_scale(),
+                 kept_scale = linear.scale_of_jacobian();
+    const bool same_scale
+      = scale == kept_scale
+        || (kept_scale != 0 && std::abs(scale / kept_scale - 1) <= 0.2);
+    // Whether matrix() is the Jacobian at x.
+    bool current = !(parameters.keep_jacobian && age
+                     && *age < parameters.jacobian_interval && same_scale);
+    problem.assemble(x, &residual, current);
+    if (current)
+      linear.matrix_changed(true, scale);
+    double previous_residual = 0;
     for (unsigned int it = 0;; ++it)
       {
         if (fault_requested("nan-residual"))
@@ -122,13 +181,22 @@ namespace vesicle_iga
           return report;
         if (it == parameters.max_iterations)
           throw SolverFailure(describe("no convergence", report));
-        if (it > 0 && ++jacobian_age >= parameters.jacobian_interval)
+        // A lagged Jacobian is rebuilt when it has served its corrections
+        // or when the chord iteration with it contracts too slowly.
+        const bool served
+          = *linear.corrections_with_jacobian() >= parameters.jacobian_interval;
+        const bool slow = it > 0
+                          && report.residual > parameters.rebuild_contraction
+                                                 * previous_residual;
+        if (!current && (served || slow))
           {
             problem.assemble(x, nullptr, true);
-            linear.matrix_changed(false);
-            jacobian_age = 0;
+            linear.matrix_changed(it == 0, scale);
           }
         correct(linear, residual, x, report);
+        linear.count_correction();
+        current           = false;
+        previous_residual = report.residual;
         problem.assemble(x, &residual, false);
       }
   }

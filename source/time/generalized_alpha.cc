@@ -178,6 +178,15 @@ namespace vesicle_iga
 
   template <int dim>
   void
+  GeneralizedAlphaStepper<dim>::assemble_jacobian_at_solution()
+  {
+    assemble(rate_next, nullptr, true);
+    linear.matrix_changed(false, dt);
+  }
+
+
+  template <int dim>
+  void
   GeneralizedAlphaStepper<dim>::accept_step()
   {
     U_previous = U;

@@ -153,6 +153,8 @@ namespace vesicle_iga
     for (const auto &[prefix, object] : objects)
       object->save(c, prefix);
     c.write(context.output_directory + "/checkpoint.h5", context.communicator);
+    for (const auto &[prefix, object] : objects)
+      object->drop_unsaved_state();
   }
 
 

@@ -121,5 +121,12 @@ namespace vesicle_iga
     virtual void
     load(const Checkpoint &checkpoint, const std::string &prefix)
       = 0;
+    /// Called after save() for a checkpoint: drop what the checkpoint does
+    /// not hold and a restart from it would not have (a Jacobian kept for
+    /// the next Newton solve), so that the run goes on exactly as a restart
+    /// from this checkpoint would.
+    virtual void
+    drop_unsaved_state()
+    {}
   };
 } // namespace vesicle_iga

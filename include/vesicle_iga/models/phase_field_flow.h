@@ -196,6 +196,9 @@ namespace vesicle_iga
     save(Checkpoint &c, const std::string &prefix) const override;
     void
     load(const Checkpoint &c, const std::string &prefix) override;
+    /// Forgets a Jacobian kept for the next Newton solve.
+    void
+    drop_unsaved_state() override;
 
   private:
     /// One step with the constraint method: Newton solves with the

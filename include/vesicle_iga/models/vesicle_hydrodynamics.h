@@ -187,6 +187,9 @@ namespace vesicle_iga
     save(Checkpoint &c, const std::string &prefix) const override;
     void
     load(const Checkpoint &c, const std::string &prefix) override;
+    /// Forgets a Jacobian kept for the next Newton solve.
+    void
+    drop_unsaved_state() override;
 
   private:
     /// Solve (H13) for every vesicle with the current fields; @p dt: the

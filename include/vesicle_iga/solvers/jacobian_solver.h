@@ -72,9 +72,34 @@ namespace vesicle_iga
       return jacobian;
     }
     /// A new Jacobian is in matrix(); @p first_of_solve: the first of a
-    /// Newton solve.
+    /// Newton solve; @p scale: NonlinearProblem::jacobian_scale() at its
+    /// assembly.
     void
-    matrix_changed(const bool first_of_solve);
+    matrix_changed(const bool first_of_solve, const double scale = 0);
+
+    /// Newton corrections made with the Jacobian in matrix() since it was
+    /// assembled; empty while matrix() holds none that a later Newton solve
+    /// may keep (before the first, after forget_jacobian()).
+    std::optional<unsigned int>
+    corrections_with_jacobian() const
+    {
+      return jacobian_corrections;
+    }
+    /// The scale given with the last matrix_changed().
+    double
+    scale_of_jacobian() const
+    {
+      return jacobian_scale;
+    }
+    /// A Newton correction was made with matrix().
+    void
+    count_correction();
+    /// matrix() is no Jacobian to keep (a failed solve, a new state layout).
+    void
+    forget_jacobian()
+    {
+      jacobian_corrections.reset();
+    }
 
     /// Solve K x = b (x: initial guess in, solution out, constrained
     /// entries set); throws SolverFailure.
@@ -116,5 +141,7 @@ namespace vesicle_iga
     /// The count of the first solve after the last build, once made.
     std::optional<unsigned int> first_iterations;
     unsigned int                extra_iterations = 0;
+    std::optional<unsigned int> jacobian_corrections;
+    double                      jacobian_scale = 0;
   };
 } // namespace vesicle_iga

@@ -29,6 +29,15 @@ namespace vesicle_iga
     virtual JacobianSolver &
     jacobian_solver()
       = 0;
+    /// A number the Jacobian scales with that changes between solves (the
+    /// step size of a time integrator), 0 if none: a Jacobian kept from an
+    /// earlier solve (NewtonParameters::keep_jacobian) serves only while
+    /// this has changed by at most 20 % since it was assembled.
+    virtual double
+    jacobian_scale() const
+    {
+      return 0;
+    }
   };
 
 
@@ -37,16 +46,27 @@ namespace vesicle_iga
     unsigned int max_iterations     = 12;
     double       relative_tolerance = 1e-8;
     double       absolute_tolerance = 1e-10;
-    /// 1: a new Jacobian every iteration; k > 1: the Jacobian is rebuilt
-    /// every k iterations (lagged Jacobian, modified Newton).
+    /// 1: a new Jacobian every iteration; k > 1: a Jacobian serves up to k
+    /// corrections (lagged Jacobian, modified Newton), fewer if a
+    /// correction with it reduces the residual by less than
+    /// rebuild_contraction.
     unsigned int jacobian_interval = 1;
+    /// With jacobian_interval > 1: a Newton solve starts with the Jacobian
+    /// the last one left (it counts its corrections on) instead of
+    /// assembling one at its initial guess.
+    bool keep_jacobian = false;
+    /// A kept Jacobian is rebuilt when the last correction made with it
+    /// left more than this fraction of the residual.
+    double rebuild_contraction = 0.1;
 
     /// Subsection "Newton" with the given defaults.
     static void
     declare(dealii::ParameterHandler &prm,
             const std::string        &default_max_iterations,
             const std::string        &default_relative_tolerance,
-            const std::string        &default_absolute_tolerance);
+            const std::string        &default_absolute_tolerance,
+            const std::string        &default_jacobian_interval = "1",
+            const std::string        &default_keep_jacobian     = "false");
     void
     parse(dealii::ParameterHandler &prm);
   };
@@ -69,9 +89,14 @@ namespace vesicle_iga
    * residual comes with the Jacobian in one pass (an initial guess is rarely
    * converged); later residuals come alone, and the Jacobian only when a
    * correction is needed, so that no Jacobian is assembled on the
-   * converged iteration. Failure (no convergence in max_iterations, a
-   * residual that is not finite, a Krylov failure) throws SolverFailure;
-   * @p x is then meaningless.
+   * converged iteration. A lagged Jacobian (jacobian_interval > 1) makes
+   * the iteration a chord method: each correction costs a residual and a
+   * Krylov solve with a matrix (and preconditioner) already built, and
+   * converges linearly; the Jacobian is rebuilt once it has served
+   * jacobian_interval corrections or converges too slowly. Failure (no
+   * convergence in max_iterations, a residual that is not finite, a Krylov
+   * failure) throws SolverFailure and forgets a kept Jacobian; @p x is then
+   * meaningless.
    */
   class NewtonSolver
   {
@@ -96,6 +121,11 @@ namespace vesicle_iga
     }
 
   private:
+    /// solve() without the clean-up after a failure.
+    NewtonReport
+    iterate(NonlinearProblem                      &problem,
+            dealii::TrilinosWrappers::MPI::Vector &x) const;
+
     const NewtonParameters parameters;
   };
 } // namespace vesicle_iga

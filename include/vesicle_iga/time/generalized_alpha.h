@@ -105,6 +105,11 @@ namespace vesicle_iga
     /// Accept the last solved step: U_{n-1} <- U_n <- U_{n+1}, t += dt.
     void
     accept_step();
+    /// The Jacobian at the step just solved (its converged rate) into the
+    /// Jacobian solver's matrix: for solves with the tangent at the solution
+    /// (the linearised ALM inverse) when Newton keeps an older Jacobian.
+    void
+    assemble_jacobian_at_solution();
 
     double
     time() const
@@ -175,6 +180,12 @@ namespace vesicle_iga
     jacobian_solver() override
     {
       return linear;
+    }
+    /// The step size: the Jacobian is alpha_m M + alpha_f gamma dt K (N3).
+    double
+    jacobian_scale() const override
+    {
+      return dt;
     }
 
     // Checkpointable: U_n, its rate, U_{n-1}, t, the last dt.
