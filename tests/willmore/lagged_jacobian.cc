@@ -8,15 +8,18 @@
 //   defaults): a Newton solve (the next ALM iteration, the next step)
 //   starts with the Jacobian the last one left.
 // Theory: all iterate to the same residual tolerance (relative 1e-8), so the
-// states, hence E_B and the constraint errors, agree to that level (checked
-// below 1e-6 relative); a lagged Jacobian converges linearly, so it needs at
-// least as many corrections; keeping it across solves assembles fewer
-// Jacobians (the 'assembly' section of the timer summary counts them) than
-// there are Newton solves (one per ALM iteration), which is the least any
-// rule that assembles per solve can do. The numbers of corrections and
-// Jacobians are not printed (they are round-off sensitive); only the
-// comparisons are. Checked to fail: with 'Keep Jacobian = false' in the
-// third run the last line says NO.
+// states, hence E_B and the constraint errors, agree to that level: below
+// 1e-6 for the lagged run, whose ALM update solves with a lagged tangent,
+// and below 1e-9 for the kept one, which assembles the tangent at the
+// solution for it (measured 5.6e-12 and 6.8e-13; 6.5e-8 and 2.9e-8 with the
+// ALM update on the kept Jacobian, which this bound catches); a lagged Jacobian
+// converges linearly, so it needs at least as many corrections; keeping it
+// across solves assembles fewer Jacobians (the 'assembly' section of the timer
+// summary counts them) than there are Newton solves (one per ALM iteration),
+// which is the least any rule that assembles per solve can do. The numbers of
+// corrections and Jacobians are not printed (they are round-off sensitive);
+// only the comparisons are. Checked to fail: with 'Keep Jacobian = false' in
+// the third run the last line says NO.
 
 #include <deal.II/base/mpi.h>
 
@@ -67,9 +70,12 @@ main(int argc, char *argv[])
   const auto &a = std::get<1>(full);
   for (const auto *run : {&lagged, &kept})
     {
-      const auto &b                = std::get<1>(*run);
-      bool        same             = a.rows.size() == 6 && b.rows.size() == 6;
-      double      corrections_full = 0, corrections = 0;
+      const auto &b = std::get<1>(*run);
+      // The kept variant assembles the tangent at the solution for the ALM
+      // update, so it meets full Newton to the Newton tolerance.
+      const double bound            = run == &lagged ? 1e-6 : 1e-9;
+      bool         same             = a.rows.size() == 6 && b.rows.size() == 6;
+      double       corrections_full = 0, corrections = 0;
       for (unsigned int i = 0; same && i < a.rows.size(); ++i)
         {
           same
@@ -77,16 +83,15 @@ main(int argc, char *argv[])
               && std::abs(a.value("bending_energy", i)
                             / b.value("bending_energy", i)
                           - 1)
-                   < 1e-6
+                   < bound
               && std::abs(a.value("area_error", i) - b.value("area_error", i))
-                   < 1e-6;
+                   < bound;
           corrections_full += a.value("newton_iterations", i);
           corrections += b.value("newton_iterations", i);
         }
       out << (run == &lagged ? "lagged" : "kept")
           << ": 6 steps, E_B and area errors agree with full Newton within "
-             "1e-6: "
-          << (same ? "yes" : "NO") << '\n'
+          << bound << ": " << (same ? "yes" : "NO") << '\n'
           << "  at least as many corrections: "
           << (corrections >= corrections_full ? "yes" : "NO") << '\n';
     }
