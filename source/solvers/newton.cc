@@ -3,6 +3,7 @@
 #include <vesicle_iga/solvers/newton.h>
 
 #include <cmath>
+#include <iostream>
 #include <limits>
 #include <sstream>
 
@@ -53,6 +54,13 @@ namespace vesicle_iga
                       "Jacobian costs many residuals (the 3D phase field: "
                       "doc/performance.md). A checkpoint drops it, so a "
                       "restart continues exactly as the run would have.");
+    prm.declare_entry("Print iterations",
+                      "false",
+                      Patterns::Bool(),
+                      "Print every Newton iteration on rank 0: the residual "
+                      "norm (also relative to the first), the Krylov "
+                      "iterations of the correction and whether its Jacobian "
+                      "was assembled for it. A diagnostic for hard steps.");
     prm.declare_entry("Rebuild contraction",
                       "0.1",
                       Patterns::Double(0, 1),
@@ -73,6 +81,7 @@ namespace vesicle_iga
     jacobian_interval   = prm.get_integer("Jacobian interval");
     keep_jacobian       = prm.get_bool("Keep Jacobian");
     rebuild_contraction = prm.get_double("Rebuild contraction");
+    print_iterations    = prm.get_bool("Print iterations");
     prm.leave_subsection();
   }
 
@@ -90,12 +99,15 @@ namespace vesicle_iga
     }
 
 
-    /// x += K^{-1} (-R); counts the correction. R is overwritten.
+    /// x += K^{-1} (-R); counts the correction. R is overwritten. With
+    /// @p print, one line per correction on rank 0.
     void
     correct(JacobianSolver                &linear,
             TrilinosWrappers::MPI::Vector &residual,
             TrilinosWrappers::MPI::Vector &x,
-            NewtonReport                  &report)
+            NewtonReport                  &report,
+            const bool                     print,
+            const bool                     new_jacobian)
     {
       TrilinosWrappers::MPI::Vector increment(x);
       residual *= -1.;
@@ -104,6 +116,15 @@ namespace vesicle_iga
       report.krylov_iterations += r.iterations;
       report.linear_residual = r.residual;
       ++report.iterations;
+      if (print
+          && Utilities::MPI::this_mpi_process(x.get_mpi_communicator()) == 0)
+        std::cout << "    Newton " << report.iterations << ": |R| "
+                  << report.residual << " ("
+                  << report.residual / report.initial_residual
+                  << " of the first), " << r.iterations
+                  << " Krylov iterations to " << r.residual << ", "
+                  << (new_jacobian ? "new" : "kept") << " Jacobian"
+                  << std::endl;
       if (!std::isfinite(increment.l2_norm()))
         throw SolverFailure(
           describe("the Newton update is not finite", report));
@@ -188,12 +209,14 @@ namespace vesicle_iga
         const bool slow = it > 0
                           && report.residual > parameters.rebuild_contraction
                                                  * previous_residual;
+        const bool assembled = current || served || slow;
         if (!current && (served || slow))
           {
             problem.assemble(x, nullptr, true);
             linear.matrix_changed(it == 0, scale);
           }
-        correct(linear, residual, x, report);
+        correct(
+          linear, residual, x, report, parameters.print_iterations, assembled);
         linear.count_correction();
         current           = false;
         previous_residual = report.residual;
@@ -211,8 +234,8 @@ namespace vesicle_iga
     JacobianSolver               &linear = problem.jacobian_solver();
     problem.assemble(x, &residual, true);
     linear.matrix_changed(true);
-    report.initial_residual = residual.l2_norm();
-    correct(linear, residual, x, report);
+    report.initial_residual = report.residual = residual.l2_norm();
+    correct(linear, residual, x, report, parameters.print_iterations, true);
     return report;
   }
 } // namespace vesicle_iga

@@ -22,7 +22,8 @@ namespace vesicle_iga
                     "(pseudo-time stepping to a steady state); adaptive: dt "
                     "from a local error estimate (spec section 2.5, PI42 "
                     "filter). In every mode a failed step is repeated with "
-                    "dt / 4.");
+                    "dt / 4; a fixed step returns to Initial dt (x4 per "
+                    "step) once 'Increase delay' steps have converged.");
     p.declare_entry("Initial dt", default_dt, Patterns::Double(0), "First dt.");
     p.declare_entry("Min dt",
                     "1e-14",
@@ -52,7 +53,8 @@ namespace vesicle_iga
                     "3",
                     Patterns::Integer(0),
                     "Consecutive converged steps required after a failure "
-                    "before dt may grow again.");
+                    "before dt may grow again (or, Step control = fixed, "
+                    "return towards Initial dt).");
   }
 
 
@@ -91,7 +93,15 @@ namespace vesicle_iga
           current_dt = std::min(current_dt * prm.growth, prm.max_dt);
         return true;
       }
-    if (prm.mode == "fixed" || error < 0)
+    if (prm.mode == "fixed")
+      {
+        // A cut is a response to one hard step (a Krylov or Newton
+        // failure), not a new step size: return to the prescribed one.
+        if (steps_since_cut >= int(prm.increase_delay))
+          current_dt = std::min(4 * current_dt, prm.initial_dt);
+        return true;
+      }
+    if (error < 0)
       return true;
     const double c0   = std::pow(1. / std::max(error, 1e-12), 0.5);
     double       rho  = std::pow(c0, 0.6) * std::pow(c_prev, -0.2);

@@ -58,6 +58,8 @@ namespace vesicle_iga
     /// A kept Jacobian is rebuilt when the last correction made with it
     /// left more than this fraction of the residual.
     double rebuild_contraction = 0.1;
+    /// One line per correction on rank 0 (a diagnostic).
+    bool print_iterations = false;
 
     /// Subsection "Newton" with the given defaults.
     static void

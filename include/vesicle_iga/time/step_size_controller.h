@@ -20,7 +20,8 @@ namespace vesicle_iga
    *    factor clipped to [0.1, 10] and dt to [Min dt, Max dt].
    * In every mode a failed step (Newton, Krylov or the constraint method)
    * is rejected and dt multiplied by 0.25; dt may then not grow until
-   * 'Increase delay' consecutive steps have converged.
+   * 'Increase delay' consecutive steps have converged. A fixed step then
+   * returns to Initial dt, by a factor 4 per accepted step.
    */
   class StepSizeController : public Checkpointable
   {
