@@ -152,15 +152,23 @@ namespace vesicle_iga
             const double f
               = membrane::chemical_potential(p, in[laplacian][q], eps);
             const double s         = (3 * p * p - 1) / (eps * eps);
-            double       advection = 0, grad_f2 = 0;
+            double       advection = 0, grad_f2 = 0, grad_f_grad_phi = 0;
             for (unsigned int k = 0; k < dim; ++k)
               {
                 advection += in[u[k]][q] * in[gradient[k]][q];
                 const double df = eps * in[gradient_of_laplacian[k]][q]
                                   - (3 * p * p - 1) / eps * in[gradient[k]][q];
                 grad_f2 += df * df;
+                grad_f_grad_phi += df * in[gradient[k]][q];
               }
-            double vs = 0;
+            // lambda_g enters (H16) as lambda_g A'(phi)[r] (the first
+            // variation of (H12c), see GlobalConstraintForcingFormula):
+            // with r = 1 and r = f its coefficients are -A'[1] and -A'[f],
+            // int f and int f^2 up to the boundary terms eps int d_n phi
+            // and eps int f d_n phi. Taken as the equation has them, the
+            // volume law of (H13) holds to round-off.
+            const double well = (p * p - 1) * p / eps;
+            double       vs   = 0;
             for (unsigned int j = 0; j < phases.size(); ++j)
               if (j != i)
                 vs += potential.potential(p, in[values[j]][q]);
@@ -168,8 +176,8 @@ namespace vesicle_iga
             const double beta = membrane::volume_multiplier_weight(
               p, eps, coefficients.membrane_volume_multiplier);
             sums[0] += beta * w;
-            sums[1] += f * w;
-            sums[2] += f * f * w;
+            sums[1] += -well * w;
+            sums[2] += -(eps * grad_f_grad_phi + f * well) * w;
             sums[3] += advection * w;
             sums[4] += advection * f * w;
             sums[5] += -c * s * f * w;
@@ -339,12 +347,18 @@ namespace vesicle_iga
           periodic_box.lower[k]  = breaks.front();
           periodic_box.period[k] = breaks.back() - breaks.front();
         }
+    std::array<bool, dim> periodic;
+    for (unsigned int k = 0; k < dim; ++k)
+      periodic[k] = space.knot_vector(k).is_periodic();
     std::vector<unsigned int> phases;
     for (unsigned int i = 0; i < n; ++i)
       {
         phases.push_back(phase(i));
         advection.push_back(std::make_unique<PhaseFieldAdvection<dim>>(
           PhaseFieldAdvectionFormula<dim>(velocity, phase(i))));
+        inflow.push_back(std::make_unique<PhaseFieldInflow<dim>>(velocity,
+                                                                 phase(i),
+                                                                 periodic));
         bending.push_back(std::make_unique<HydrodynamicBending<dim>>(
           HydrodynamicBendingFormula<dim>(velocity, phase(i), membrane)));
         constraint.push_back(std::make_unique<GlobalConstraintForcing<dim>>(
@@ -399,6 +413,7 @@ namespace vesicle_iga
     for (unsigned int i = 0; i < n; ++i)
       {
         list.push_back(advection[i].get());
+        list.push_back(inflow[i].get());
         list.push_back(bending[i].get());
         list.push_back(constraint[i].get());
         list.push_back(inextensibility[i].get());

@@ -16,12 +16,19 @@ namespace vesicle_iga
   {
     using D = Derivative<dim>;
     inputs.push_back({phi, D::value});
-    inputs.push_back({phi, D::laplacian});
     for (unsigned int a = 0; a < dim; ++a)
       inputs.push_back({phi, D::gradient(a)});
+    for (unsigned int a = 0; a < dim; ++a)
+      for (unsigned int b = a; b < dim; ++b)
+        inputs.push_back({phi, D::hessian(a, b)});
     outputs.push_back({phi, D::value});
     for (unsigned int a = 0; a < dim; ++a)
+      outputs.push_back({phi, D::gradient(a)});
+    for (unsigned int a = 0; a < dim; ++a)
       outputs.push_back({velocity + a, D::value});
+    for (unsigned int a = 0; a < dim; ++a)
+      for (unsigned int k = 0; k < dim; ++k)
+        outputs.push_back({velocity + a, D::gradient(k)});
   }
 
   template struct GlobalConstraintForcingFormula<2>;

@@ -42,6 +42,7 @@
 #include <vesicle_iga/terms/local_inextensibility.h>
 #include <vesicle_iga/terms/navier_stokes_rbvms.h>
 #include <vesicle_iga/terms/phase_field_advection.h>
+#include <vesicle_iga/terms/phase_field_inflow.h>
 #include <vesicle_iga/terms/rate.h>
 #include <vesicle_iga/terms/vesicle_interaction.h>
 #include <vesicle_iga/terms/viscosity_contrast.h>
@@ -271,6 +272,9 @@ hydrodynamic_terms()
 
   PhaseFieldAdvection<dim> advection({0, phi_1});
   check<dim>("advection (H16)", advection, dofs);
+  std::array<bool, dim> not_periodic{};
+  PhaseFieldInflow<dim> inflow(0, phi_1, not_periodic);
+  check<dim>("phase-field inflow (4.10)", inflow, dofs);
   HydrodynamicBending<dim> bending({0, phi_1, c});
   check<dim>("bending (H24)-(H25)", bending, dofs);
   GlobalConstraintForcing<dim> constraint({0, phi_1, c});

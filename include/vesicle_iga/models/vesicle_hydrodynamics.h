@@ -7,6 +7,7 @@
 #include <vesicle_iga/terms/hydrodynamic_bending.h>
 #include <vesicle_iga/terms/local_inextensibility.h>
 #include <vesicle_iga/terms/phase_field_advection.h>
+#include <vesicle_iga/terms/phase_field_inflow.h>
 #include <vesicle_iga/terms/tension_lumped_schur.h>
 #include <vesicle_iga/terms/vesicle_interaction.h>
 #include <vesicle_iga/terms/viscosity_contrast.h>
@@ -215,6 +216,7 @@ namespace vesicle_iga
     std::vector<std::pair<unsigned int, unsigned int>>         pairs;
     std::unique_ptr<ViscosityContrast<dim>>                    viscosity;
     std::vector<std::unique_ptr<TensionLumpedSchur<dim>>>      tension_schur;
+    std::vector<std::unique_ptr<PhaseFieldInflow<dim>>>        inflow;
     std::unique_ptr<IncompressibleFlow<dim>>                   flow_model;
     std::vector<double> area_0, volume_0, lambda_g, lambda_v;
     /// d lambda / dt over the last accepted step (zero before the first).
