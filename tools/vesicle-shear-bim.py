@@ -160,7 +160,7 @@ class Membrane:
         return area, length, (cx, cy), angle
 
 
-def initial_ellipse(points, reduced_area, membrane):
+def initial_ellipse(points, reduced_area):
     """Ellipse of area pi (R_0 = 1) and the requested reduced area
     4 pi A / L^2, major axis along y (as HD3's vesicles start), sampled at
     equal arc length."""
@@ -206,7 +206,7 @@ def write_profile(name, membrane, x, sigma, capillary):
 def run(points, reduced_area, capillary, end_time, steps_per_unit, log, history_file=None,
         gradient=(0.0, 1.0, 0.0), profile_file=None):
     membrane = Membrane(points)
-    x = initial_ellipse(points, reduced_area, membrane)
+    x = initial_ellipse(points, reduced_area)
     area0, length0, _, _ = membrane.measures(x)
     dt = 1.0 / (steps_per_unit * capillary)
     steps = int(round(end_time * steps_per_unit))
