@@ -68,7 +68,8 @@ namespace vesicle_iga
 
   LinearSolveResult
   JacobianSolver::solve(TrilinosWrappers::MPI::Vector       &x,
-                        const TrilinosWrappers::MPI::Vector &b)
+                        const TrilinosWrappers::MPI::Vector &b,
+                        const double                         tolerance)
   {
     check_input(!parameters.uses_caller_preconditioner()
                   || caller_preconditioner,
@@ -81,23 +82,24 @@ namespace vesicle_iga
     // counts (which would cost the time step a smaller step size).
     const bool kept = caller_preconditioner && !stale;
     if (!kept)
-      return solve_once(x, b);
+      return solve_once(x, b, tolerance);
     const TrilinosWrappers::MPI::Vector guess(x);
     try
       {
-        return solve_once(x, b);
+        return solve_once(x, b, tolerance);
       }
     catch (const SolverFailure &)
       {
         x = guess;
-        return solve_once(x, b);
+        return solve_once(x, b, tolerance);
       }
   }
 
 
   LinearSolveResult
   JacobianSolver::solve_once(TrilinosWrappers::MPI::Vector       &x,
-                             const TrilinosWrappers::MPI::Vector &b)
+                             const TrilinosWrappers::MPI::Vector &b,
+                             const double                         tolerance)
   {
     std::optional<TimerOutput::Scope> scope;
     if (caller_preconditioner && stale)
@@ -118,7 +120,10 @@ namespace vesicle_iga
     LinearSolveResult result;
     try
       {
-        result = solve_linear_system(parameters,
+        LinearSolverParameters this_solve = parameters;
+        if (tolerance > 0)
+          this_solve.tolerance = tolerance;
+        result = solve_linear_system(this_solve,
                                      jacobian,
                                      x,
                                      b,

@@ -32,45 +32,10 @@
 #include <memory>
 #include <string>
 
+#include "small_systems.h"
+
 using namespace vesicle_iga;
 using namespace dealii;
-
-/// The inverse of the diagonal of the matrix it was built for; counts its
-/// builds.
-class InverseDiagonal : public MatrixPreconditioner
-{
-public:
-  explicit InverseDiagonal(unsigned int &builds)
-    : builds(builds)
-  {}
-  void
-  initialize(const TrilinosWrappers::SparseMatrix &matrix) override
-  {
-    ++builds;
-    inverse.reinit(matrix.locally_owned_range_indices(),
-                   matrix.get_mpi_communicator());
-    for (const auto i : matrix.locally_owned_range_indices())
-      inverse[i] = 1. / matrix.diag_element(i);
-    inverse.compress(VectorOperation::insert);
-  }
-  void
-  vmult(TrilinosWrappers::MPI::Vector       &dst,
-        const TrilinosWrappers::MPI::Vector &src) const override
-  {
-    dst = src;
-    dst.scale(inverse);
-  }
-  std::string
-  description() const override
-  {
-    return "inverse diagonal";
-  }
-
-private:
-  unsigned int                 &builds;
-  TrilinosWrappers::MPI::Vector inverse;
-};
-
 
 /// 1 stays 1; 10-12 (11 in exact arithmetic) prints as 11.
 std::string
@@ -104,7 +69,7 @@ run(const std::string &reuse_name,
   JacobianSolver solver(parameters, no_constraints, sparsity);
   unsigned int   builds   = 0;
   double         step_key = 1.;
-  solver.set_preconditioner(std::make_unique<InverseDiagonal>(builds),
+  solver.set_preconditioner(std::make_unique<InverseDiagonal>(&builds),
                             reuse_name == "across-steps" ?
                               JacobianSolver::Reuse::across_steps :
                               JacobianSolver::Reuse::every_matrix,
@@ -156,14 +121,11 @@ int
 main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const MPI_Comm                   comm = MPI_COMM_WORLD;
-  const unsigned int               n    = 60;
-  const unsigned int n_ranks            = Utilities::MPI::n_mpi_processes(comm);
-  const unsigned int rank = Utilities::MPI::this_mpi_process(comm);
-  IndexSet           owned(n);
-  owned.add_range(rank * n / n_ranks, (rank + 1) * n / n_ranks);
-  std::ofstream out;
-  if (rank == 0)
+  const MPI_Comm                   comm  = MPI_COMM_WORLD;
+  const unsigned int               n     = 60;
+  const IndexSet                   owned = evenly_split(n, comm);
+  std::ofstream                    out;
+  if (Utilities::MPI::this_mpi_process(comm) == 0)
     out.open("output");
   run("across-steps", 25, comm, owned, out);
   run("across-steps", 0, comm, owned, out);

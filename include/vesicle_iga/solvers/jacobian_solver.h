@@ -102,10 +102,20 @@ namespace vesicle_iga
     }
 
     /// Solve K x = b (x: initial guess in, solution out, constrained
-    /// entries set); throws SolverFailure.
+    /// entries set); throws SolverFailure. @p tolerance > 0: the relative
+    /// tolerance of this solve instead of the parameter's (a Newton
+    /// correction that can end its solve, NewtonParameters).
     LinearSolveResult
     solve(dealii::TrilinosWrappers::MPI::Vector       &x,
-          const dealii::TrilinosWrappers::MPI::Vector &b);
+          const dealii::TrilinosWrappers::MPI::Vector &b,
+          const double                                 tolerance = 0);
+
+    /// The relative tolerance of a Krylov solve ("Linear solver/Tolerance").
+    double
+    tolerance() const
+    {
+      return parameters.tolerance;
+    }
 
     const dealii::AffineConstraints<double> &
     constraints() const
@@ -126,7 +136,8 @@ namespace vesicle_iga
     /// marks it so), then solves.
     LinearSolveResult
     solve_once(dealii::TrilinosWrappers::MPI::Vector       &x,
-               const dealii::TrilinosWrappers::MPI::Vector &b);
+               const dealii::TrilinosWrappers::MPI::Vector &b,
+               const double                                 tolerance);
 
     const LinearSolverParameters             parameters;
     const dealii::AffineConstraints<double> &increment_constraints;
