@@ -17,8 +17,7 @@ namespace vesicle_iga
                             const std::string &default_relative_tolerance,
                             const std::string &default_absolute_tolerance,
                             const std::string &default_jacobian_interval,
-                            const std::string &default_keep_jacobian,
-                            const std::string &default_tighten_final)
+                            const std::string &default_keep_jacobian)
   {
     prm.enter_subsection("Newton");
     prm.declare_entry("Max iterations",
@@ -64,7 +63,7 @@ namespace vesicle_iga
                       "was assembled for it. A diagnostic for hard steps.");
     prm.declare_entry(
       "Tighten final correction",
-      default_tighten_final,
+      "true",
       Patterns::Bool(),
       "From the second Newton correction on, ask the Krylov solve for "
       "0.5 max(absolute tolerance, relative tolerance |R_0|) / |R_k| "
