@@ -60,12 +60,19 @@ namespace vesicle_iga
     double rebuild_contraction = 0.1;
     /// One line per correction on rank 0 (a diagnostic).
     bool print_iterations = false;
-    /// From the second correction on, a Krylov solve whose residual alone
-    /// would stop the Newton solve from converging after it is asked for
-    /// what convergence needs (at most 100 times the linear tolerance):
-    /// the correction that can end the solve is solved accurately enough to
-    /// end it (doc/hydrodynamics.md, "Cost per step").
-    bool tighten_final_correction = true;
+    /// The Krylov tolerance from the second correction on: the linear
+    /// solver's; the reduction that can end the Newton solve where that is
+    /// tighter (by at most 100), so that the correction that can end the
+    /// solve is solved accurately enough to end it; or that reduction also
+    /// where it is looser (up to 0.1), so that it is solved no further
+    /// (doc/hydrodynamics.md, "Cost per step").
+    enum class LaterCorrections
+    {
+      linear,
+      tightened,
+      fitted
+    };
+    LaterCorrections later_corrections = LaterCorrections::tightened;
 
     /// Subsection "Newton" with the given defaults.
     static void
@@ -74,7 +81,8 @@ namespace vesicle_iga
             const std::string        &default_relative_tolerance,
             const std::string        &default_absolute_tolerance,
             const std::string        &default_jacobian_interval = "1",
-            const std::string        &default_keep_jacobian     = "false");
+            const std::string        &default_keep_jacobian     = "false",
+            const std::string        &default_later_corrections = "tightened");
     void
     parse(dealii::ParameterHandler &prm);
   };
@@ -102,10 +110,11 @@ namespace vesicle_iga
    * Krylov solve with a matrix (and preconditioner) already built, and
    * converges linearly; the Jacobian is rebuilt once it has served
    * jacobian_interval corrections or converges too slowly. A correction
-   * after the first asks its Krylov solve for 0.5 max(atol, rtol |R_0|) /
-   * |R_k| (with tighten_final_correction, where that is tighter than the
-   * linear tolerance by at most 100: the Krylov residual |R_k| eta then
-   * leaves room for the Newton tolerance). Failure (no
+   * after the first can ask its Krylov solve for eta = 0.5 max(atol, rtol
+   * |R_0|) / |R_k| (later_corrections: where that is tighter than the
+   * linear tolerance by at most 100, and with "fitted" also where it is
+   * looser, up to 0.1: the Krylov residual eta |R_k| then leaves room for
+   * the Newton tolerance, and no more). Failure (no
    * convergence in max_iterations, a residual that is not finite, a Krylov
    * failure) throws SolverFailure and forgets a kept Jacobian; @p x is then
    * meaningless.
@@ -134,11 +143,11 @@ namespace vesicle_iga
 
   private:
     /// The relative Krylov tolerance of correction @p iteration (0: the
-    /// linear solver's own), NewtonParameters::tighten_final_correction.
+    /// linear solver's own), NewtonParameters::later_corrections.
     double
-    final_correction_tolerance(const unsigned int  iteration,
-                               const NewtonReport &report,
-                               const double        linear_tolerance) const;
+    correction_tolerance(const unsigned int  iteration,
+                         const NewtonReport &report,
+                         const double        linear_tolerance) const;
 
     /// solve() without the clean-up after a failure.
     NewtonReport
