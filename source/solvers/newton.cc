@@ -17,8 +17,7 @@ namespace vesicle_iga
                             const std::string &default_relative_tolerance,
                             const std::string &default_absolute_tolerance,
                             const std::string &default_jacobian_interval,
-                            const std::string &default_keep_jacobian,
-                            const std::string &default_later_corrections)
+                            const std::string &default_keep_jacobian)
   {
     prm.enter_subsection("Newton");
     prm.declare_entry("Max iterations",
@@ -64,7 +63,7 @@ namespace vesicle_iga
                       "was assembled for it. A diagnostic for hard steps.");
     prm.declare_entry(
       "Krylov tolerance of later corrections",
-      default_later_corrections,
+      "tightened",
       Patterns::Selection("linear|tightened|fitted"),
       "From the second Newton correction on, the Krylov solve can be asked "
       "for the reduction that can end the Newton solve, eta = 0.5 max("

@@ -81,8 +81,7 @@ namespace vesicle_iga
             const std::string        &default_relative_tolerance,
             const std::string        &default_absolute_tolerance,
             const std::string        &default_jacobian_interval = "1",
-            const std::string        &default_keep_jacobian     = "false",
-            const std::string        &default_later_corrections = "tightened");
+            const std::string        &default_keep_jacobian     = "false");
     void
     parse(dealii::ParameterHandler &prm);
   };
