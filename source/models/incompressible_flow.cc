@@ -8,6 +8,7 @@
 #include <vesicle_iga/models/incompressible_flow.h>
 #include <vesicle_iga/solvers/flow_block_preconditioner.h>
 #include <vesicle_iga/solvers/spline_multigrid.h>
+#include <vesicle_iga/terms/rate.h>
 
 namespace vesicle_iga
 {
@@ -219,6 +220,40 @@ namespace vesicle_iga
 
 
   template <int dim>
+  std::shared_ptr<const TrilinosWrappers::SparseMatrix>
+  IncompressibleFlow<dim>::pressure_mass_matrix() const
+  {
+    // The Gram matrix of the flow's spline space, numbered as the pressure
+    // of the flow block (one scalar field on the same mesh: the same
+    // owners and order of the basis functions), as the Jacobian of a rate
+    // term with respect to the rate.
+    const SplineDofHandler<dim>       pressure_dofs(patch_mesh, space, 1);
+    TrilinosWrappers::SparsityPattern sparsity;
+    pressure_dofs.make_sparsity_pattern(sparsity);
+    auto mass = std::make_shared<TrilinosWrappers::SparseMatrix>();
+    mass->reinit(sparsity);
+    SystemAssembler<dim> mass_assembler(pressure_dofs,
+                                        assembler.get_quadrature());
+    RateTerm<dim>        rate({0});
+    mass_assembler.add_term(rate);
+    const TrilinosWrappers::MPI::Vector zero(
+      pressure_dofs.locally_owned_dofs(),
+      pressure_dofs.locally_relevant_dofs(),
+      comm);
+    AssemblyState state;
+    state.value        = &zero;
+    state.rate         = &zero;
+    state.value_factor = {0.};
+    state.rate_factor  = {1.};
+    mass_assembler.assemble(state,
+                            AffineConstraints<double>(),
+                            nullptr,
+                            mass.get());
+    return mass;
+  }
+
+
+  template <int dim>
   void
   IncompressibleFlow<dim>::setup_block_preconditioner()
   {
@@ -252,6 +287,8 @@ namespace vesicle_iga
             },
             mg));
       }
+    if (block.schur_approximation == "stabilized-cahouet-chabard")
+      preconditioner->set_pressure_mass(pressure_mass_matrix());
     // With coupled fields the coupling wraps the flow blocks.
     std::unique_ptr<LumpedOperatorPreconditioner> whole;
     if (coupling)
@@ -270,7 +307,9 @@ namespace vesicle_iga
       whole = std::move(preconditioner);
     LumpedOperatorPreconditioner *target = whole.get();
     std::function<void()>         lumped_operators;
-    if (block.schur_approximation == "cahouet-chabard" || coupling)
+    if (block.schur_approximation == "cahouet-chabard"
+        || block.schur_approximation == "stabilized-cahouet-chabard"
+        || coupling)
       {
         schur_assembler
           = std::make_unique<SystemAssembler<dim>>(dof_handler,

@@ -1,9 +1,12 @@
 // Block preconditioner of the RBVMS velocity-pressure tangent. See the
 // header and doc/flow.md ("Linear solver").
 
+#include <deal.II/lac/solver_cg.h>
+
 #include <vesicle_iga/solvers/flow_block_preconditioner.h>
 #include <vesicle_iga/solvers/interleaved_blocks.h>
 
+#include <cmath>
 #include <sstream>
 #include <utility>
 
@@ -12,12 +15,32 @@ namespace vesicle_iga
   using namespace dealii;
 
 
+  namespace
+  {
+    /// AMG of a pressure operator: elliptic smoothed aggregation of the
+    /// spline space's wide stencil.
+    TrilinosWrappers::PreconditionAMG::AdditionalData
+    pressure_amg_data(const unsigned int sweeps)
+    {
+      TrilinosWrappers::PreconditionAMG::AdditionalData data;
+      data.elliptic              = true;
+      data.higher_order_elements = true;
+      data.smoother_sweeps       = sweeps;
+      data.aggregation_threshold = 0.02;
+      return data;
+    }
+  } // namespace
+
+
   FlowBlockPreconditioner::FlowBlockPreconditioner(
     const unsigned int                       dim,
     const FlowBlockPreconditionerParameters &prm)
     : dim(dim)
     , prm(prm)
-    , cahouet_chabard(prm.schur_approximation == "cahouet-chabard")
+    , cahouet_chabard(prm.schur_approximation == "cahouet-chabard"
+                      || prm.schur_approximation
+                           == "stabilized-cahouet-chabard")
+    , stabilized(prm.schur_approximation == "stabilized-cahouet-chabard")
     , direct_control(1, 0.)
   {}
 
@@ -35,6 +58,69 @@ namespace vesicle_iga
     const TrilinosWrappers::MPI::Vector &lumped_operators)
   {
     lumped = lumped_operators;
+  }
+
+
+  void
+  FlowBlockPreconditioner::set_pressure_mass(
+    std::shared_ptr<const TrilinosWrappers::SparseMatrix> mass)
+  {
+    pressure_mass = std::move(mass);
+  }
+
+
+  void
+  FlowBlockPreconditioner::initialize_viscous_schur(
+    const std::vector<MatrixRow> &rows_C)
+  {
+    AssertThrow(pressure_mass
+                  && pressure_mass->locally_owned_range_indices()
+                       == pressure_owned,
+                ExcMessage("FlowBlockPreconditioner: set_pressure_mass() was "
+                           "not called with the pressure numbering"));
+    const MPI_Comm comm = pressure_mass->get_mpi_communicator();
+    // sqrt(w_i), w_i = k_p int N_i / (mu*/Re + tau_C) / int N_i: the
+    // viscous weight averaged over the support of N_i, so that the
+    // consistent M_nu = W^1/2 M W^1/2 has the lumped one as row sums
+    // where the weight is constant.
+    TrilinosWrappers::MPI::Vector sqrt_weight(pressure_owned, comm);
+    IndexSet                      columns(pressure_owned.size());
+    std::size_t                   k = 0;
+    for (const auto i : pressure_owned)
+      {
+        double row_sum = 0;
+        for_each_row_entry(*pressure_mass,
+                           i,
+                           [&](const auto j, const double v) {
+                             row_sum += v;
+                             columns.add_index(j);
+                           });
+        sqrt_weight[i] = std::sqrt(inverse_viscous_mass[k] > 0 ?
+                                     1. / (inverse_viscous_mass[k] * row_sum) :
+                                     0.);
+        ++k;
+      }
+    sqrt_weight.compress(VectorOperation::insert);
+    columns.add_indices(pressure_owned);
+    columns.compress();
+    TrilinosWrappers::MPI::Vector ghosted(pressure_owned, columns, comm);
+    ghosted = sqrt_weight;
+
+    std::vector<MatrixRow> rows_V(rows_C);
+    k = 0;
+    for (const auto i : pressure_owned)
+      {
+        const double s_i = ghosted[i];
+        for_each_row_entry(*pressure_mass,
+                           i,
+                           [&](const auto j, const double v) {
+                             rows_V[k].emplace_back(j, s_i * ghosted[j] * v);
+                           });
+        ++k;
+      }
+    make_distributed_matrix(pressure_owned, pressure_owned, comm, rows_V, V);
+    V_amg.initialize(V, pressure_amg_data(prm.schur_sweeps));
+    p_viscous.reinit(pressure_owned, comm);
   }
 
 
@@ -142,6 +228,9 @@ namespace vesicle_iga
       }
     make_distributed_matrix(pressure_owned, pressure_owned, comm, rows_S, S);
 
+    if (stabilized)
+      initialize_viscous_schur(rows_C);
+
     // One null-space vector per velocity component.
     TrilinosWrappers::PreconditionAMG::AdditionalData velocity_data;
     velocity_data.elliptic              = prm.velocity_elliptic;
@@ -158,12 +247,7 @@ namespace vesicle_iga
     else
       A_inverse.initialize(A, velocity_data);
 
-    TrilinosWrappers::PreconditionAMG::AdditionalData schur_data;
-    schur_data.elliptic              = true;
-    schur_data.higher_order_elements = true;
-    schur_data.smoother_sweeps       = prm.schur_sweeps;
-    schur_data.aggregation_threshold = 0.02;
-    S_inverse.initialize(S, schur_data);
+    S_inverse.initialize(S, pressure_amg_data(prm.schur_sweeps));
 
     u.reinit(velocity_owned, comm);
     r_u.reinit(velocity_owned, comm);
@@ -201,7 +285,29 @@ namespace vesicle_iga
     // P^{-1} = [A B; 0 S]^{-1}: p = S^{-1} r_p, u = A^{-1} (r_u - B p).
     split(src, r_u, r_p);
     S_inverse.vmult(p, r_p);
-    if (cahouet_chabard)
+    if (stabilized)
+      {
+        // The viscous part (M_nu + C)^{-1} r_p.
+        if (prm.viscous_schur_tolerance > 0)
+          {
+            p_viscous = 0;
+            SolverControl                           control(200,
+                                  prm.viscous_schur_tolerance * r_p.l2_norm());
+            SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
+            try
+              {
+                cg.solve(V, p_viscous, r_p, V_amg);
+              }
+            catch (const SolverControl::NoConvergence &)
+              {
+                // A preconditioner inside FGMRES: the iterate serves.
+              }
+          }
+        else
+          V_amg.vmult(p_viscous, r_p);
+        p += p_viscous;
+      }
+    else if (cahouet_chabard)
       {
         auto       *q = p.begin();
         const auto *r = r_p.begin();

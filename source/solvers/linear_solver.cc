@@ -135,15 +135,29 @@ namespace vesicle_iga
     prm.declare_entry(
       "Schur approximation",
       "cahouet-chabard",
-      Patterns::Selection("cahouet-chabard|simple|direct"),
+      Patterns::Selection(
+        "cahouet-chabard|stabilized-cahouet-chabard|simple|direct"),
       "cahouet-chabard: S^-1 = (lumped viscous pressure mass)^-1 + "
-      "(C - D M_L^-1 B)^-1 with M_L the lumped velocity mass; iteration "
-      "counts independent of the mesh from Stokes to transient flows. "
+      "(C - D M_L^-1 B)^-1 with M_L the lumped velocity mass. "
+      "stabilized-cahouet-chabard: the viscous part by (consistent "
+      "viscous pressure mass + C)^-1, C the RBVMS pressure block: the "
+      "equal-order pressure modes that only C controls are seen by it, "
+      "and with an exact velocity solve the count stays bounded under "
+      "refinement in viscous flows; with the velocity V-cycle it fails "
+      "at 32 elements per unit length (doc/hydrodynamics.md, \"Linear "
+      "solver\"). "
       "simple: S = C - D diag(A)^-1 B (grows with refinement in viscous "
       "flows; kept for comparison). direct: no approximation, the whole "
       "velocity-pressure block by sparse LU (Amesos KLU; the velocity "
       "settings are unused): a diagnostic that shows the Krylov iterations "
       "the two approximations cost, far too slow and large for runs.");
+    prm.declare_entry(
+      "Viscous Schur tolerance",
+      "1e-2",
+      Patterns::Double(0., 1.),
+      "Schur approximation = stabilized-cahouet-chabard: relative "
+      "tolerance of the CG solve (preconditioned by AMG) of the viscous "
+      "part M_nu + C; 0 applies one AMG V-cycle instead.");
     prm.leave_subsection();
   }
 
@@ -159,6 +173,7 @@ namespace vesicle_iga
     schur_sweeps            = prm.get_integer("Schur sweeps");
     velocity_elliptic       = prm.get_bool("Velocity elliptic");
     schur_approximation     = prm.get("Schur approximation");
+    viscous_schur_tolerance = prm.get_double("Viscous Schur tolerance");
     prm.leave_subsection();
   }
 

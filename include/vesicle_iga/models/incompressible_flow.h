@@ -224,6 +224,10 @@ namespace vesicle_iga
     boundary_values(const double t, dealii::AffineConstraints<double> &c) const;
     void
     setup_block_preconditioner();
+    /// The pressure space's mass matrix, for the viscous part of the
+    /// stabilized Cahouet-Chabard Schur approximation.
+    std::shared_ptr<const dealii::TrilinosWrappers::SparseMatrix>
+    pressure_mass_matrix() const;
     void
     update_ghosted_solution();
 

@@ -8,6 +8,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <vesicle_iga/solvers/interleaved_blocks.h>
 #include <vesicle_iga/solvers/linear_solver.h>
 #include <vesicle_iga/solvers/spline_multigrid.h>
 
@@ -54,6 +55,15 @@ namespace vesicle_iga
    *    the true Schur complement independently of h, so the Krylov count
    *    should not grow under refinement; it grows with the Reynolds number
    *    of the step, as convection is not in S.
+   *  - stabilized-cahouet-chabard: S^{-1} = (M_nu + C)^{-1} + S_t^{-1}
+   *    with M_nu the consistent viscous pressure mass (the pressure Gram
+   *    matrix of set_pressure_mass() scaled symmetrically by the weights
+   *    of the lumped one). The equal-order pressure modes near the
+   *    checkerboard are controlled by C alone in the true Schur
+   *    complement, while the lumped mass overestimates them (by up to 340
+   *    for cubic splines in 2D) and the consistent mass underestimates
+   *    them: M_nu + C sees both families. Solved by CG with AMG to a
+   *    relative tolerance (or one V-cycle).
    *  - simple: S = C - D diag(A)^{-1} B, fully algebraic; in viscous flows
    *    diag(A) ~ nu / h^2 makes S too small for smooth pressures and the
    *    count doubles per refinement (measured in doc/flow.md).
@@ -83,6 +93,11 @@ namespace vesicle_iga
     void
     set_lumped_operators(
       const dealii::TrilinosWrappers::MPI::Vector &lumped) override;
+    /// The Gram matrix of the pressure space, in the numbering of the
+    /// pressure block (stabilized-cahouet-chabard).
+    void
+    set_pressure_mass(
+      std::shared_ptr<const dealii::TrilinosWrappers::SparseMatrix> mass);
     void
     initialize(const dealii::TrilinosWrappers::SparseMatrix &matrix) override;
     void
@@ -92,6 +107,9 @@ namespace vesicle_iga
     description() const override;
 
   private:
+    /// M_nu + C of stabilized-cahouet-chabard and its AMG.
+    void
+    initialize_viscous_schur(const std::vector<MatrixRow> &rows_C);
     void
     split(const dealii::TrilinosWrappers::MPI::Vector &full,
           dealii::TrilinosWrappers::MPI::Vector       &velocity,
@@ -108,11 +126,15 @@ namespace vesicle_iga
 
     dealii::TrilinosWrappers::MPI::Vector lumped;
     std::vector<double> inverse_viscous_mass; // local pressure entries
-    dealii::TrilinosWrappers::SparseMatrix        A, B, D, S;
-    dealii::TrilinosWrappers::PreconditionAMG     A_inverse, S_inverse;
-    std::unique_ptr<MatrixPreconditioner>         velocity_preconditioner;
+    dealii::TrilinosWrappers::SparseMatrix    A, B, D, S;
+    dealii::TrilinosWrappers::PreconditionAMG A_inverse, S_inverse;
+    std::unique_ptr<MatrixPreconditioner>     velocity_preconditioner;
+    std::shared_ptr<const dealii::TrilinosWrappers::SparseMatrix> pressure_mass;
+    dealii::TrilinosWrappers::SparseMatrix                        V;
+    dealii::TrilinosWrappers::PreconditionAMG                     V_amg;
+    mutable dealii::TrilinosWrappers::MPI::Vector                 p_viscous;
     mutable dealii::TrilinosWrappers::MPI::Vector u, p, r_u, r_p, tmp_u;
-    bool                                          cahouet_chabard;
+    bool                                          cahouet_chabard, stabilized;
     dealii::SolverControl                         direct_control;
     std::unique_ptr<dealii::TrilinosWrappers::SolverDirect> direct;
   };

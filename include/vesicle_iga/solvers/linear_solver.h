@@ -43,8 +43,12 @@ namespace vesicle_iga
     bool velocity_elliptic = true;
     /// "spline-multigrid" or "amg" on the velocity block.
     std::string velocity_preconditioner = "spline-multigrid";
-    /// "cahouet-chabard" or "simple" (see FlowBlockPreconditioner).
+    /// "cahouet-chabard", "stabilized-cahouet-chabard", "simple" or
+    /// "direct" (see FlowBlockPreconditioner).
     std::string schur_approximation = "cahouet-chabard";
+    /// Relative tolerance of the CG solve of the viscous part M_nu + C of
+    /// stabilized-cahouet-chabard (0: one AMG V-cycle).
+    double viscous_schur_tolerance = 1e-2;
 
     /// The entries, with the velocity smoother's defaults of @p defaults.
     static void
