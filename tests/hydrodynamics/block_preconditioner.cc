@@ -35,6 +35,8 @@
 #include <fstream>
 #include <iostream>
 
+#include "vesicle_flow_setup.h"
+
 using namespace vesicle_iga;
 using namespace dealii;
 
@@ -70,15 +72,10 @@ namespace
                                  KnotVector::uniform(3, 24, 0., 1.5)};
     const SplineSpace<2>      space(kv);
     MembraneCoefficients      membrane;
-    membrane.epsilon         = 0.125;
-    membrane.viscosity_ratio = 4;
-    FlowCoefficients<2> flow;
-    flow.reynolds_number           = membrane.reynolds_number;
-    flow.inverse_estimate_constant = 6. * std::pow(3., 4);
-    std::vector<VelocityCondition<2>> walls{
-      {BoundarySelection<2>("all", "walls"),
-       std::make_shared<Shear>(3),
-       false}};
+    membrane.epsilon                = 0.125;
+    membrane.viscosity_ratio        = 4;
+    const FlowCoefficients<2> flow  = cubic_flow_coefficients(membrane);
+    const auto                walls = strong_walls(std::make_shared<Shear>(3));
     IncompressibleFlowParameters parameters;
     parameters.solver.method                    = method;
     parameters.solver.block.schur_approximation = schur_approximation;

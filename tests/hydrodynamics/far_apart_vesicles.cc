@@ -51,6 +51,8 @@
 #include <fstream>
 #include <iostream>
 
+#include "vesicle_flow_setup.h"
+
 using namespace vesicle_iga;
 using namespace dealii;
 
@@ -94,15 +96,10 @@ namespace
          3, static_cast<unsigned int>(per_unit * height), 0., height)}};
     const SplineSpace<2> space(kv);
     MembraneCoefficients membrane; // membrane volume multiplier (default)
-    membrane.epsilon     = eps;
-    membrane.interaction = false;
-    FlowCoefficients<2> flow;
-    flow.reynolds_number           = membrane.reynolds_number;
-    flow.inverse_estimate_constant = 6. * std::pow(3., 4);
-    std::vector<VelocityCondition<2>> walls{
-      {BoundarySelection<2>("all", "walls"),
-       std::make_shared<Shear>(3),
-       false}};
+    membrane.epsilon                = eps;
+    membrane.interaction            = false;
+    const FlowCoefficients<2> flow  = cubic_flow_coefficients(membrane);
+    const auto                walls = strong_walls(std::make_shared<Shear>(3));
     IncompressibleFlowParameters parameters;
     parameters.solver.method             = "direct";
     parameters.quadrature_points         = 5;

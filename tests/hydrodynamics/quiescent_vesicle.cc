@@ -37,6 +37,8 @@
 #include <fstream>
 #include <iostream>
 
+#include "vesicle_flow_setup.h"
+
 using namespace vesicle_iga;
 using namespace dealii;
 
@@ -55,14 +57,10 @@ main(int argc, char *argv[])
   const SplineSpace<2> space(kv);
 
   MembraneCoefficients membrane;
-  membrane.epsilon = 0.125;
-  FlowCoefficients<2> flow;
-  flow.reynolds_number           = membrane.reynolds_number;
-  flow.inverse_estimate_constant = 6. * std::pow(3., 4);
-  std::vector<VelocityCondition<2>> walls{
-    {BoundarySelection<2>("all", "walls"),
-     std::make_shared<Functions::ZeroFunction<2>>(3),
-     false}};
+  membrane.epsilon               = 0.125;
+  const FlowCoefficients<2> flow = cubic_flow_coefficients(membrane);
+  const auto                walls
+    = strong_walls(std::make_shared<Functions::ZeroFunction<2>>(3));
   IncompressibleFlowParameters parameters;
   parameters.solver.method             = "direct";
   parameters.quadrature_points         = 5;

@@ -37,6 +37,8 @@
 #include <fstream>
 #include <iostream>
 
+#include "vesicle_flow_setup.h"
+
 using namespace vesicle_iga;
 using namespace dealii;
 
@@ -57,15 +59,12 @@ namespace
       kv[d] = KnotVector::uniform(3, 32, 0., 2.);
     const SplineSpace<2> space(kv);
     MembraneCoefficients membrane;
-    membrane.epsilon = 0.125;
-    FlowCoefficients<2> flow;
-    flow.reynolds_number           = membrane.reynolds_number;
-    flow.inverse_estimate_constant = 6. * std::pow(3., 4);
+    membrane.epsilon               = 0.125;
+    const FlowCoefficients<2> flow = cubic_flow_coefficients(membrane);
     // Velocity components (U, 0) and a pressure slot.
     const auto wall_velocity = std::make_shared<Functions::ConstantFunction<2>>(
       std::vector<double>{U, 0., 0.});
-    std::vector<VelocityCondition<2>> walls{
-      {BoundarySelection<2>("all", "walls"), wall_velocity, false}};
+    const auto                   walls = strong_walls(wall_velocity);
     IncompressibleFlowParameters parameters;
     parameters.solver.method             = "direct";
     parameters.quadrature_points         = 5;
