@@ -158,6 +158,18 @@ namespace vesicle_iga
       "Schur approximation = stabilized-cahouet-chabard: relative "
       "tolerance of the CG solve (preconditioned by AMG) of the viscous "
       "part M_nu + C; 0 applies one AMG V-cycle instead.");
+    prm.declare_entry(
+      "Velocity tolerance",
+      "0",
+      Patterns::Double(0., 1.),
+      "0: the velocity block is approximated by one V-cycle of the velocity "
+      "preconditioner. > 0: by GMRES on the velocity block, preconditioned "
+      "by that V-cycle, to this relative residual (at most 100 "
+      "iterations): a V-cycle that is weak on the grad-div term of RBVMS "
+      "then costs inner iterations instead of outer ones, and the outer "
+      "count follows the Schur approximation alone (it takes 1e-5 to "
+      "reach the count of the exact velocity solve; doc/hydrodynamics.md, "
+      "\"Linear solver\").");
     prm.leave_subsection();
   }
 
@@ -174,6 +186,7 @@ namespace vesicle_iga
     velocity_elliptic       = prm.get_bool("Velocity elliptic");
     schur_approximation     = prm.get("Schur approximation");
     viscous_schur_tolerance = prm.get_double("Viscous Schur tolerance");
+    velocity_tolerance      = prm.get_double("Velocity tolerance");
     prm.leave_subsection();
   }
 

@@ -110,6 +110,11 @@ namespace vesicle_iga
     /// M_nu + C of stabilized-cahouet-chabard and its AMG.
     void
     initialize_viscous_schur(const std::vector<MatrixRow> &rows_C);
+    /// u = A^{-1} r_u: one V-cycle, or GMRES preconditioned by it to
+    /// 'Velocity tolerance'.
+    template <typename VCycle>
+    void
+    solve_velocity(const VCycle &v_cycle) const;
     void
     split(const dealii::TrilinosWrappers::MPI::Vector &full,
           dealii::TrilinosWrappers::MPI::Vector       &velocity,

@@ -49,6 +49,9 @@ namespace vesicle_iga
     /// Relative tolerance of the CG solve of the viscous part M_nu + C of
     /// stabilized-cahouet-chabard (0: one AMG V-cycle).
     double viscous_schur_tolerance = 1e-2;
+    /// Relative tolerance of an inner GMRES solve of the velocity block,
+    /// preconditioned by the velocity V-cycle (0: one V-cycle).
+    double velocity_tolerance = 0.;
 
     /// The entries, with the velocity smoother's defaults of @p defaults.
     static void
