@@ -68,10 +68,8 @@ namespace
       const std::string &schur_approximation,
       TimerOutput       &timer)
   {
-    std::array<KnotVector, 2> kv{KnotVector::uniform(3, 36, 0., 2.25),
-                                 KnotVector::uniform(3, 24, 0., 1.5)};
-    const SplineSpace<2>      space(kv);
-    MembraneCoefficients      membrane;
+    const SplineSpace<2> space(cubic_box_knots(36, 0., 2.25, 24, 0., 1.5));
+    MembraneCoefficients membrane;
     membrane.epsilon                = 0.125;
     membrane.viscosity_ratio        = 4;
     const FlowCoefficients<2> flow  = cubic_flow_coefficients(membrane);

@@ -45,6 +45,8 @@
 
 #include <fstream>
 
+#include "vesicle_flow_setup.h"
+
 using namespace vesicle_iga;
 using namespace dealii;
 
@@ -99,10 +101,7 @@ main(int argc, char *argv[])
   std::ofstream out(Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0 ?
                       "output" :
                       "/dev/null");
-  std::array<KnotVector, 2> kv;
-  for (unsigned int d = 0; d < 2; ++d)
-    kv[d] = KnotVector::uniform(3, 16, 0., 2.);
-  const SplineSpace<2> space(kv);
+  const SplineSpace<2> space(cubic_box_knots(16, 0., 2.));
   const PatchMesh<2>   mesh(MPI_COMM_WORLD, space, nullptr);
   FieldLayout<2>       layout;
   layout.add_space(space);

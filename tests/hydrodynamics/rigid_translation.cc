@@ -54,10 +54,7 @@ namespace
   Outcome
   run(const double U, TimerOutput &timer)
   {
-    std::array<KnotVector, 2> kv;
-    for (unsigned int d = 0; d < 2; ++d)
-      kv[d] = KnotVector::uniform(3, 32, 0., 2.);
-    const SplineSpace<2> space(kv);
+    const SplineSpace<2> space(cubic_box_knots(32, 0., 2.));
     MembraneCoefficients membrane;
     membrane.epsilon               = 0.125;
     const FlowCoefficients<2> flow = cubic_flow_coefficients(membrane);

@@ -72,11 +72,9 @@ namespace
       TimerOutput        &timer,
       const VelocitySolve velocity = VelocitySolve::exact)
   {
-    const unsigned int        n = 2 * per_unit;
-    std::array<KnotVector, 2> kv{KnotVector::uniform(3, n, -1., 1.),
-                                 KnotVector::uniform(3, n, -1., 1.)};
-    const SplineSpace<2>      space(kv);
-    MembraneCoefficients      membrane;
+    const unsigned int   n = 2 * per_unit;
+    const SplineSpace<2> space(cubic_box_knots(n, -1., 1.));
+    MembraneCoefficients membrane;
     membrane.epsilon               = 0.125;
     const FlowCoefficients<2> flow = cubic_flow_coefficients(membrane);
     const auto                walls

@@ -27,6 +27,8 @@
 #include <fstream>
 #include <iostream>
 
+#include "vesicle_flow_setup.h"
+
 using namespace vesicle_iga;
 using namespace dealii;
 
@@ -43,11 +45,8 @@ namespace
 int
 main()
 {
-  std::ofstream             out("output");
-  std::array<KnotVector, 2> kv;
-  for (unsigned int d = 0; d < 2; ++d)
-    kv[d] = KnotVector::uniform(3, 32, 0., 2.);
-  const SplineSpace<2> space(kv);
+  std::ofstream        out("output");
+  const SplineSpace<2> space(cubic_box_knots(32, 0., 2.));
   const Point<2>       centre(1., 1.);
   const double         R = 0.5;
 
