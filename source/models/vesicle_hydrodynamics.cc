@@ -471,7 +471,8 @@ namespace vesicle_iga
       [&increments](const types::global_dof_index g) {
         return increments.is_constrained(g);
       },
-      parameters);
+      parameters,
+      phase_field_blocks.tolerance);
   }
 
 

@@ -1,6 +1,9 @@
 // Block preconditioner of the coupled vesicle-flow tangent (spec Part H).
 // See the header and doc/hydrodynamics.md ("Linear solver").
 
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/solver_gmres.h>
+
 #include <vesicle_iga/solvers/spline_multigrid.h>
 #include <vesicle_iga/solvers/vesicle_block_preconditioner.h>
 
@@ -41,6 +44,13 @@ namespace vesicle_iga
                       "The phase-field spline multigrid coarsens until a "
                       "level has at most this many unknowns, solved by "
                       "sparse LU (0: the multigrid's default).");
+    prm.declare_entry(
+      "Phase field tolerance",
+      "0",
+      dealii::Patterns::Double(0, 1),
+      "0: one V-cycle per phase-field block and application. > 0: GMRES on "
+      "each phase-field block, preconditioned by that V-cycle, to this "
+      "relative residual (at most 100 iterations).");
   }
 
 
@@ -51,6 +61,7 @@ namespace vesicle_iga
     smoother       = prm.get("Phase field smoother");
     sweeps         = prm.get_integer("Phase field sweeps");
     coarse_size    = prm.get_integer("Phase field coarse size");
+    tolerance      = prm.get_double("Phase field tolerance");
   }
 
 
@@ -119,11 +130,13 @@ namespace vesicle_iga
     std::unique_ptr<FlowBlockPreconditioner>            flow_preconditioner,
     std::vector<std::unique_ptr<MatrixPreconditioner>>  phase_preconditioners,
     const std::function<bool(types::global_dof_index)> &constrained,
-    const FlowBlockPreconditionerParameters            &parameters)
+    const FlowBlockPreconditionerParameters            &parameters,
+    const double                                        phase_tolerance)
     : dim(dim)
     , n(n_vesicles)
     , comm(comm)
     , prm(parameters)
+    , phase_tolerance(phase_tolerance)
     , blocks(owned,
              dim + 1 + 2 * n_vesicles,
              vesicle_groups(dim, n_vesicles),
@@ -307,10 +320,7 @@ namespace vesicle_iga
             phi_phi[i][j].vmult(tmp_lambda, x_phi[j]);
             r_phi -= tmp_lambda;
           }
-        if (phase[i])
-          phase[i]->vmult(x_phi[i], r_phi);
-        else
-          phase_amg[i].vmult(x_phi[i], r_phi);
+        solve_phase(i);
 
         // Tension: S_i^-1 (r_lambda - L_phi phi_i), both limits added.
         blocks.extract(src, tension_group(i), r_lambda);
@@ -344,6 +354,41 @@ namespace vesicle_iga
   }
 
 
+  void
+  VesicleBlockPreconditioner::solve_phase(const unsigned int i) const
+  {
+    if (phase[i])
+      solve_phase(i, *phase[i]);
+    else
+      solve_phase(i, phase_amg[i]);
+  }
+
+
+  template <typename VCycle>
+  void
+  VesicleBlockPreconditioner::solve_phase(const unsigned int i,
+                                          const VCycle      &v_cycle) const
+  {
+    if (phase_tolerance == 0)
+      {
+        v_cycle.vmult(x_phi[i], r_phi);
+        return;
+      }
+    // Inside the outer FGMRES a variable preconditioner is allowed; the
+    // iterate serves if the limit is reached.
+    x_phi[i] = 0;
+    SolverControl control(100, phase_tolerance * r_phi.l2_norm());
+    SolverGMRES<TrilinosWrappers::MPI::Vector>::AdditionalData data(50);
+    SolverGMRES<TrilinosWrappers::MPI::Vector> gmres(control, data);
+    try
+      {
+        gmres.solve(phi_phi[i][i], x_phi[i], r_phi, v_cycle);
+      }
+    catch (const SolverControl::NoConvergence &)
+      {}
+  }
+
+
   std::string
   VesicleBlockPreconditioner::description() const
   {
@@ -351,7 +396,8 @@ namespace vesicle_iga
     s << "vesicle blocks: "
       << (phase.empty() || !phase[0] ? std::string("AMG") :
                                        phase[0]->description())
-      << " on each of " << n << " phase fields, two AMG V-cycles per "
+      << (phase_tolerance > 0 ? " inside GMRES" : "") << " on each of " << n
+      << " phase fields, two AMG V-cycles per "
       << "tension Schur complement; " << flow->description();
     return s.str();
   }

@@ -28,6 +28,9 @@ namespace vesicle_iga
     unsigned int sweeps   = 2;
     /// Largest level solved by LU (0: the SplineMultigrid default).
     unsigned int coarse_size = 0;
+    /// > 0: each phase-field block by GMRES with the V-cycle to this relative
+    /// residual instead of one V-cycle.
+    double tolerance = 0.;
 
     /// Declares (parses) the entries in the current subsection.
     static void
@@ -88,7 +91,8 @@ namespace vesicle_iga
       std::unique_ptr<FlowBlockPreconditioner>                    flow,
       std::vector<std::unique_ptr<MatrixPreconditioner>>          phase,
       const std::function<bool(dealii::types::global_dof_index)> &constrained,
-      const FlowBlockPreconditionerParameters                    &parameters);
+      const FlowBlockPreconditionerParameters                    &parameters,
+      const double phase_tolerance = 0.);
 
     /// Lumped operators in the monolithic layout: the flow's on velocity and
     /// pressure rows, M_nu,i on the tension rows.
@@ -118,10 +122,18 @@ namespace vesicle_iga
     /// inverse approximates -S_i^-1 in one limit.
     void
     initialize_tension(const unsigned int i);
+    /// x_phi[i] from r_phi: one V-cycle, or GMRES with it to
+    /// phase_tolerance.
+    void
+    solve_phase(const unsigned int i) const;
+    template <typename VCycle>
+    void
+    solve_phase(const unsigned int i, const VCycle &v_cycle) const;
 
     const unsigned int                       dim, n;
     const MPI_Comm                           comm;
     const FlowBlockPreconditionerParameters  prm;
+    const double                             phase_tolerance;
     const InterleavedBlocks                  blocks; // flow, u, phi_i, lambda_i
     std::unique_ptr<FlowBlockPreconditioner> flow;
     std::vector<std::unique_ptr<MatrixPreconditioner>> phase;
