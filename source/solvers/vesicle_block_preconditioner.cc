@@ -1,9 +1,7 @@
 // Block preconditioner of the coupled vesicle-flow tangent (spec Part H).
 // See the header and doc/hydrodynamics.md ("Linear solver").
 
-#include <deal.II/lac/solver_control.h>
-#include <deal.II/lac/solver_gmres.h>
-
+#include <vesicle_iga/solvers/inner_gmres.h>
 #include <vesicle_iga/solvers/spline_multigrid.h>
 #include <vesicle_iga/solvers/vesicle_block_preconditioner.h>
 
@@ -358,34 +356,11 @@ namespace vesicle_iga
   VesicleBlockPreconditioner::solve_phase(const unsigned int i) const
   {
     if (phase[i])
-      solve_phase(i, *phase[i]);
+      apply_block_inverse(
+        phi_phi[i][i], *phase[i], phase_tolerance, x_phi[i], r_phi);
     else
-      solve_phase(i, phase_amg[i]);
-  }
-
-
-  template <typename VCycle>
-  void
-  VesicleBlockPreconditioner::solve_phase(const unsigned int i,
-                                          const VCycle      &v_cycle) const
-  {
-    if (phase_tolerance == 0)
-      {
-        v_cycle.vmult(x_phi[i], r_phi);
-        return;
-      }
-    // Inside the outer FGMRES a variable preconditioner is allowed; the
-    // iterate serves if the limit is reached.
-    x_phi[i] = 0;
-    SolverControl control(100, phase_tolerance * r_phi.l2_norm());
-    SolverGMRES<TrilinosWrappers::MPI::Vector>::AdditionalData data(50);
-    SolverGMRES<TrilinosWrappers::MPI::Vector> gmres(control, data);
-    try
-      {
-        gmres.solve(phi_phi[i][i], x_phi[i], r_phi, v_cycle);
-      }
-    catch (const SolverControl::NoConvergence &)
-      {}
+      apply_block_inverse(
+        phi_phi[i][i], phase_amg[i], phase_tolerance, x_phi[i], r_phi);
   }
 
 

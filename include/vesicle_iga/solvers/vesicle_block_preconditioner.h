@@ -126,9 +126,6 @@ namespace vesicle_iga
     /// phase_tolerance.
     void
     solve_phase(const unsigned int i) const;
-    template <typename VCycle>
-    void
-    solve_phase(const unsigned int i, const VCycle &v_cycle) const;
 
     const unsigned int                       dim, n;
     const MPI_Comm                           comm;
