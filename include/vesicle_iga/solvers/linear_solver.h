@@ -23,6 +23,11 @@ namespace vesicle_iga
     std::string reuse             = "every-matrix";
     std::string velocity_smoother = "chebyshev";
     std::string velocity_sweeps   = "3";
+    /// Pressure Schur approximation: the lumped viscous mass for the flow
+    /// alone, the consistent one with C for vesicles in the flow
+    /// (doc/hydrodynamics.md, "The stabilized Cahouet-Chabard
+    /// approximation").
+    std::string schur_approximation = "cahouet-chabard";
   };
 
   /// Settings of the velocity-pressure block preconditioner
