@@ -67,13 +67,6 @@ namespace
   Outcome
   run(const PhaseSolve phase_solve, TimerOutput &timer)
   {
-    const unsigned int   n = 32;
-    const SplineSpace<2> space(cubic_box_knots(n, -1., 1.));
-    MembraneCoefficients membrane;
-    membrane.epsilon               = 0.125;
-    const FlowCoefficients<2> flow = cubic_flow_coefficients(membrane);
-    const auto                walls
-      = strong_walls(std::make_shared<Functions::ZeroFunction<2>>(3));
     IncompressibleFlowParameters parameters;
     parameters.solver.method                     = "fgmres-block";
     parameters.solver.tolerance                  = 1e-8;
@@ -94,28 +87,13 @@ namespace
     if (phase_solve == PhaseSolve::inner_gmres)
       phase.tolerance = 1e-3;
 
-    VesicleHydrodynamics<2> model(MPI_COMM_WORLD,
-                                  space,
-                                  membrane,
-                                  flow,
-                                  walls,
-                                  parameters,
-                                  1,
-                                  timer,
-                                  phase);
-    const InitialVesicle    vesicle(Point<2>(0., 0.), 0.45, 0.84, 90);
-    model.set_initial_state(Functions::ZeroFunction<2>(2),
-                            {[&vesicle](const Point<2> &x) {
-                              return vesicle.phase_field(x, 0.125);
-                            }});
-    const StepReport r = model.solve_step(8e-3);
-    model.accept_step();
-    const auto m = model.measure();
-    Outcome    o;
-    o.per_newton = double(r.krylov_iterations) / r.newton_iterations;
-    o.area       = m[0].area;
-    o.bending    = m[0].bending_energy;
-    o.centroid_x = m[0].centroid[0];
+    const RestingVesicleStep step
+      = step_resting_vesicle(16, parameters, 8e-3, timer, phase);
+    Outcome o;
+    o.per_newton = step.per_newton;
+    o.area       = step.measures.area;
+    o.bending    = step.measures.bending_energy;
+    o.centroid_x = step.measures.centroid[0];
     return o;
   }
 } // namespace

@@ -72,13 +72,6 @@ namespace
       TimerOutput        &timer,
       const VelocitySolve velocity = VelocitySolve::exact)
   {
-    const unsigned int   n = 2 * per_unit;
-    const SplineSpace<2> space(cubic_box_knots(n, -1., 1.));
-    MembraneCoefficients membrane;
-    membrane.epsilon               = 0.125;
-    const FlowCoefficients<2> flow = cubic_flow_coefficients(membrane);
-    const auto                walls
-      = strong_walls(std::make_shared<Functions::ZeroFunction<2>>(3));
     IncompressibleFlowParameters parameters;
     parameters.solver.method                     = "fgmres-block";
     parameters.solver.tolerance                  = 1e-8;
@@ -98,20 +91,12 @@ namespace
     parameters.newton.relative_tolerance = 1e-8;
     parameters.newton.absolute_tolerance = 1e-12;
 
-    VesicleHydrodynamics<2> model(
-      MPI_COMM_WORLD, space, membrane, flow, walls, parameters, 1, timer);
-    const InitialVesicle vesicle(Point<2>(0., 0.), 0.45, 0.84, 90);
-    model.set_initial_state(Functions::ZeroFunction<2>(2),
-                            {[&vesicle](const Point<2> &x) {
-                              return vesicle.phase_field(x, 0.125);
-                            }});
-    const StepReport r = model.solve_step(1e-3);
-    model.accept_step();
-    const auto m = model.measure();
-    Outcome    o;
-    o.per_newton = double(r.krylov_iterations) / r.newton_iterations;
-    o.area       = m[0].area;
-    o.bending    = m[0].bending_energy;
+    const RestingVesicleStep step
+      = step_resting_vesicle(per_unit, parameters, 1e-3, timer);
+    Outcome o;
+    o.per_newton = step.per_newton;
+    o.area       = step.measures.area;
+    o.bending    = step.measures.bending_energy;
     return o;
   }
 } // namespace

@@ -4,8 +4,10 @@
 #pragma once
 
 #include <deal.II/base/function.h>
+#include <deal.II/base/timer.h>
 
 #include <vesicle_iga/models/vesicle_hydrodynamics.h>
+#include <vesicle_iga/physics/initial_vesicle.h>
 #include <vesicle_iga/spline/knot_vector.h>
 
 #include <array>
@@ -53,5 +55,48 @@ namespace vesicle_iga
   strong_walls(std::shared_ptr<dealii::Function<2>> velocity)
   {
     return {{BoundarySelection<2>("all", "walls"), velocity, false}};
+  }
+  /// One step of dt from rest of one vesicle (R_0 = 0.45, chi = 0.84, major
+  /// axis vertical) at the centre of [-1, 1]^2 with 2 @p per_unit cubic
+  /// elements per direction, eps = 0.125, fluid at rest, u = 0 strongly on
+  /// every wall (the solver tests' set-up): the FGMRES count per Newton
+  /// iteration and the vesicle's measures after the step.
+  struct RestingVesicleStep
+  {
+    double          per_newton = 0;
+    VesicleMeasures measures;
+  };
+
+  inline RestingVesicleStep
+  step_resting_vesicle(const unsigned int                  per_unit,
+                       const IncompressibleFlowParameters &parameters,
+                       const double                        dt,
+                       dealii::TimerOutput                &timer,
+                       const PhaseFieldBlockParameters    &phase_field_blocks
+                       = PhaseFieldBlockParameters())
+  {
+    const SplineSpace<2> space(cubic_box_knots(2 * per_unit, -1., 1.));
+    MembraneCoefficients membrane;
+    membrane.epsilon               = 0.125;
+    const FlowCoefficients<2> flow = cubic_flow_coefficients(membrane);
+    VesicleHydrodynamics<2>   model(
+      MPI_COMM_WORLD,
+      space,
+      membrane,
+      flow,
+      strong_walls(std::make_shared<dealii::Functions::ZeroFunction<2>>(3)),
+      parameters,
+      1,
+      timer,
+      phase_field_blocks);
+    const InitialVesicle vesicle(dealii::Point<2>(0., 0.), 0.45, 0.84, 90);
+    model.set_initial_state(dealii::Functions::ZeroFunction<2>(2),
+                            {[&vesicle](const dealii::Point<2> &x) {
+                              return vesicle.phase_field(x, 0.125);
+                            }});
+    const StepReport r = model.solve_step(dt);
+    model.accept_step();
+    return {double(r.krylov_iterations) / r.newton_iterations,
+            model.measure()[0]};
   }
 } // namespace vesicle_iga
