@@ -62,11 +62,7 @@ namespace vesicle_iga
         assembler.add_auxiliary_field(dofs);
         if (m.flexoelectric)
           electric_terms.push_back(std::make_unique<FlexoelectricEnergy<dim>>(
-            0,
-            0,
-            m.flexoelectric_coefficient(),
-            m.membrane_thickness(),
-            p.epsilon));
+            0, 0, m.flexoelectric_prefactor(p.epsilon), p.epsilon));
         if (m.membrane_dielectric)
           electric_terms.push_back(
             std::make_unique<MembraneDielectricEnergy<dim>>(

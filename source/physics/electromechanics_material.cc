@@ -56,6 +56,20 @@ namespace vesicle_iga
                       "true",
                       Patterns::Bool(),
                       "Include E_F (E6).");
+    prm.declare_entry(
+      "Flexoelectric form",
+      "source",
+      Patterns::Selection("source|transmembrane"),
+      "The prefactor of (E6). source: 3 c1 d_m / (2 sqrt2) as printed "
+      "(Appendix A); with the potential of (E16) the membrane's potential "
+      "drop happens over about 0.43 eps, so this E_F sees Delta V / (1.89 "
+      "eps) instead of Delta V / d_m and grows as 1 / eps: the results "
+      "depend on eps (doc/validation.md, item 2). transmembrane: 2 c1 eps / "
+      "rho (rho = 0.98 from sigma(phi) (E10)), whose limit eps -> 0 is the "
+      "sharp E_F = -c1 closed-int div(m) Delta V of spec 3.1 (field inside "
+      "the membrane), bounded uniformly in eps. The source's E_F at a given "
+      "eps is the transmembrane form with c1 replaced by rho d_m c1 / (1.886 "
+      "eps).");
     prm.declare_entry("Membrane dielectric energy",
                       "true",
                       Patterns::Bool(),
@@ -96,6 +110,9 @@ namespace vesicle_iga
     c1                     = prm.get_double("Flexoelectric coefficient");
     d_m                    = prm.get_double("Membrane thickness");
     flexoelectric          = prm.get_bool("Flexoelectric energy");
+    flexoelectric_form     = prm.get("Flexoelectric form") == "transmembrane" ?
+                               FlexoelectricForm::transmembrane :
+                               FlexoelectricForm::source;
     membrane_dielectric    = prm.get_bool("Membrane dielectric energy");
     electrolyte_dielectric = prm.get_bool("Electrolyte dielectric energy");
     length_unit            = prm.get_double("Length unit");
@@ -118,5 +135,37 @@ namespace vesicle_iga
                     value_text(energy_unit),
                     "positive units");
       }
+  }
+
+
+  double
+  ElectromechanicsMaterial::flexoelectric_prefactor(const double epsilon) const
+  {
+    const double c1_normalised = flexoelectric_coefficient();
+    if (flexoelectric_form == FlexoelectricForm::source)
+      return 3 * c1_normalised * membrane_thickness()
+             / (2 * std::sqrt(2.)); // (E6)
+    return 2 * c1_normalised * epsilon / transmembrane_drop_fraction();
+  }
+
+
+  double
+  ElectromechanicsMaterial::transmembrane_drop_fraction() const
+  {
+    // In units of eps; the profile is within 1e-10 of +-1 at |n| = 12 and
+    // 1 / sigma - 1 / sigma_ref decays as phi^-8 - 1 there.
+    const unsigned int n_points = 240000;
+    const double       L = 12, dn = 2 * L / n_points;
+    double             seen = 0, drop = 0;
+    for (unsigned int i = 0; i < n_points; ++i)
+      {
+        const double n     = -L + (i + 0.5) * dn;
+        const double phi   = std::tanh(n / std::sqrt(2.));
+        const double sigma = conductivity(phi);
+        const double w     = (1 - phi * phi) * (1 - phi * phi);
+        seen += w / sigma * dn;
+        drop += (1 / sigma - 1 / (n < 0 ? sigma_in : sigma_out)) * dn;
+      }
+    return seen / drop;
   }
 } // namespace vesicle_iga

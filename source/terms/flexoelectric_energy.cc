@@ -9,11 +9,10 @@ namespace vesicle_iga
   template <int dim>
   FlexoelectricEnergy<dim>::FlexoelectricEnergy(const unsigned int phi,
                                                 const unsigned int potential,
-                                                const double       c1,
-                                                const double       d_m,
+                                                const double       prefactor,
                                                 const double       eps)
     : fields(phi, potential)
-    , C(3 * c1 * d_m / (2 * std::sqrt(2.)))
+    , C(prefactor)
     , eps(eps)
   {}
 

@@ -92,8 +92,7 @@ forces(const double h,
   BendingEnergy<2>               bending(0, 1., eps, 0.);
   FlexoelectricEnergy<2>         flexo(0,
                                0,
-                               material.flexoelectric_coefficient(),
-                               material.membrane_thickness(),
+                               material.flexoelectric_prefactor(eps),
                                eps);
   MembraneDielectricEnergy<2>    membrane(0,
                                        0,

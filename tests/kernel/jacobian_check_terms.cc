@@ -166,7 +166,7 @@ phase_field_terms()
   check<dim>("volume constraint", volume, dofs);
   RateTerm<dim> rate({0});
   check<dim>("rate", rate, dofs);
-  FlexoelectricEnergy<dim> flexo(0, 0, 2., 0.5, eps);
+  FlexoelectricEnergy<dim> flexo(0, 0, 3 * 2. * 0.5 / (2 * std::sqrt(2.)), eps);
   check<dim>("flexoelectric (E6)", flexo, dofs, &dofs, &psi);
   MembraneDielectricEnergy<dim> membrane(0, 0, 0.5, 3., eps);
   check<dim>("membrane dielectric (E7)", membrane, dofs, &dofs, &psi);

@@ -30,6 +30,14 @@ namespace vesicle_iga
     double      length_unit = 1e-6, energy_unit = 1e-19, potential_unit = 1;
     bool        flexoelectric = true, membrane_dielectric = true,
          electrolyte_dielectric = true;
+    /// Which prefactor the flexoelectric energy (E6) carries (see
+    /// flexoelectric_prefactor()).
+    enum class FlexoelectricForm
+    {
+      source,        ///< (E6) as printed: 3 c1 d_m / (2 sqrt2)
+      transmembrane, ///< 2 c1 eps / rho: the sharp E_F of spec 3.1
+    };
+    FlexoelectricForm flexoelectric_form = FlexoelectricForm::source;
 
     static void
     declare(dealii::ParameterHandler &prm);
@@ -69,6 +77,40 @@ namespace vesicle_iga
     {
       return field_strength * length_unit / potential_unit;
     }
+    /**
+     * The prefactor C of E_F = -C int (eps Lap phi + h) grad phi.grad psi
+     * (E6), normalised units.
+     *
+     * source: C = 3 c1 d_m / (2 sqrt2), the recast of Appendix A, which
+     * treats E.m as one value across the membrane. With the potential of
+     * (E16) almost all of the transmembrane potential Delta V drops where
+     * sigma (E10) dips, over about 0.43 eps, so E_F of this form sees
+     * Delta V / (1.89 eps) instead of Delta V / d_m and grows as 1 / eps
+     * (doc/validation.md, 2c): no sharp-interface limit.
+     *
+     * transmembrane: C = 2 c1 eps / rho. Since (1 - phi^2)^2 div(m)
+     * m.grad psi = 2 eps (eps Lap phi + h) grad phi.grad psi (spec 3.2), this
+     * is E_F = -(c1 / rho) int (1 - phi^2)^2 div(m) m.grad psi, whose
+     * integral across the membrane is rho Delta V / rho = Delta V: the limit
+     * is the sharp E_F of spec 3.1 with E the field inside the membrane,
+     * -c1 closed-int div(m) Delta V, bounded uniformly in eps (Delta V is).
+     * rho = transmembrane_drop_fraction().
+     */
+    double
+    flexoelectric_prefactor(const double epsilon) const;
+
+    /**
+     * rho: the fraction of the transmembrane potential that the weight
+     * (1 - phi^2)^2 of (E2) sees across a flat membrane phi = tanh(n /
+     * (sqrt2 eps)) carrying a uniform current j (sigma psi' = j, (E16) in
+     * 1D): int (1 - phi^2)^2 / sigma dn / int (1 / sigma - 1 / sigma_ref) dn,
+     * sigma_ref the electrolyte's conductivity on each side. A property of
+     * sigma(phi) alone (both integrals scale with eps): 0.9823 for the data
+     * of spec 3.10. Computed by a midpoint rule on n / eps in [-12, 12].
+     */
+    double
+    transmembrane_drop_fraction() const;
+
     /// Normalised energy to eV.
     double
     to_eV(const double energy) const

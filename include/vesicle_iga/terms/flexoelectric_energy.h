@@ -7,7 +7,9 @@ namespace vesicle_iga
   /**
    * Flexoelectric energy (E6) with the potential psi^n frozen (spec 3.9):
    *   E_F = -C int (eps Delta phi + h(phi)) grad phi . grad psi,
-   *   C = 3 c1 d_m / (2 sqrt2),  h = phi (1 - phi^2) / eps.
+   *   h = phi (1 - phi^2) / eps,
+   * with C = 3 c1 d_m / (2 sqrt2) as printed, or the prefactor of the
+   * transmembrane form (ElectromechanicsMaterial::flexoelectric_prefactor()).
    * Residual, the second line of (E18):
    *   -C [(h' grad phi.grad psi, w) + (eps grad phi.grad psi, Delta w)
    *       + ((eps Delta phi + h) grad psi, grad w)];
@@ -18,11 +20,10 @@ namespace vesicle_iga
   class FlexoelectricEnergy : public FunctionalTerm<dim>
   {
   public:
-    /// @p potential: the auxiliary field of psi.
+    /// @p potential: the auxiliary field of psi; @p prefactor: C.
     FlexoelectricEnergy(const unsigned int phi,
                         const unsigned int potential,
-                        const double       c1,
-                        const double       d_m,
+                        const double       prefactor,
                         const double       epsilon);
     std::string
     name() const override
