@@ -55,9 +55,10 @@
 //    so E_F = -(c1 / rho) 2 pi int (1 - phi^2)^2 psi' dr = -2 pi c1 Delta V
 //    by the definition of rho: the sharp value for every eps. Checked: the
 //    discrete E_F converges to it under h at eps = 0.2 and 0.1 (the same
-//    limit at both: uniform in eps), at two centres; the source form (E6) on
-//    the same fields is rho 3 d_m / (4 sqrt2 eps) times it and doubles when
-//    eps is halved (the 1 / eps growth of 2c in doc/validation.md).
+//    limit at both: uniform in eps), at two centres. Printed, not checked
+//    (it follows from the prefactors): the source form (E6) on the same
+//    fields, rho 3 d_m / (4 sqrt2 eps) times it, doubling when eps is halved
+//    (the 1 / eps growth of 2c in doc/validation.md).
 
 #include <deal.II/base/quadrature_lib.h>
 
@@ -457,17 +458,19 @@ check_transmembrane()
                        && errors[2] < 1e-4);
           const double expected = rho * 3 * material.membrane_thickness()
                                   / (4 * std::sqrt(2.) * eps);
+          // Not a check: the two forms differ by their prefactors only, so
+          // this ratio is rho 3 d_m / (4 sqrt2 eps) by construction. Printed
+          // for what it shows: (E6) on the checked fields.
           out << "      source form / transmembrane form = " << ratio
-              << " (rho 3 d_m / (4 sqrt2 eps) = " << expected
-              << ", within 2e-3 relative)"
-              << check(std::abs(ratio / expected - 1) < 2e-3);
+              << " (the prefactors' ratio rho 3 d_m / (4 sqrt2 eps) = "
+              << expected << ")\n";
           if (c.norm() == 0)
             source_limit.push_back(ratio * sharp);
         }
     }
+  // Follows from the checked transmembrane values and the prefactors.
   out << "  source form, eps halved: E_F ratio "
-      << source_limit[1] / source_limit[0] << " (1 / eps: within 1 % of 2)"
-      << check(std::abs(source_limit[1] / source_limit[0] - 2) < 0.02);
+      << source_limit[1] / source_limit[0] << " (grows as 1 / eps)\n";
 }
 
 int
