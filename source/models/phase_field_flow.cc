@@ -197,6 +197,22 @@ namespace vesicle_iga
 
 
   template <int dim>
+  void
+  PhaseFieldFlow<dim>::set_constraint_targets(const double volume_target,
+                                              const double area_target)
+  {
+    const double dv = volume_target - V0, da = area_target - A0;
+    alm.shift_targets(dv, da);
+    V0 = volume_target;
+    A0 = area_target;
+    // The Lagrangian (E14) is measured against the targets.
+    const double change = -area.multiplier() * da - volume.multiplier() * dv;
+    current.lagrangian += change;
+    frozen.lagrangian += change;
+  }
+
+
+  template <int dim>
   StepReport
   PhaseFieldFlow<dim>::solve_step(const double dt)
   {

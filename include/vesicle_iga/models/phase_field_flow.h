@@ -107,6 +107,11 @@ namespace vesicle_iga
     {
       return A0;
     }
+    /// New targets of the diffuse constraints (E9) in the middle of a run
+    /// (ZeroSetTargetControl); the ALM keeps its shifts.
+    void
+    set_constraint_targets(const double volume_target,
+                           const double area_target);
     double
     volume_target() const
     {

@@ -103,6 +103,18 @@ namespace vesicle_iga
       be        = area;
       last_step = {{0, 0, 0}};
     }
+    /// Moves the targets to V0 + dv, A0 + da, and the shifted targets
+    /// alpha, beta with them, so that what the iterations have learnt about
+    /// the step (the shifts alpha - V0, beta - A0, the inverse Jacobian, the
+    /// last accepted step) is kept (ZeroSetTargetControl).
+    void
+    shift_targets(const double dv, const double da)
+    {
+      V0 += dv;
+      A0 += da;
+      al += dv;
+      be += da;
+    }
     double
     volume_target() const
     {
