@@ -49,12 +49,6 @@ namespace vesicle_iga
             const Measures &sharp,
             const Measures &current) const;
 
-    const Measures &
-    reference() const
-    {
-      return sharp_reference;
-    }
-
     /// The reference; a checkpoint written without this control keeps the
     /// reference of the initial state computed at set-up.
     void
