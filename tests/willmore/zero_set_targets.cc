@@ -50,8 +50,9 @@ namespace
   std::pair<double, double>
   sharp_drift(const NamedTimeSeries &series, const double L, const double A)
   {
-    double dl = 0, da = 0;
-    for (unsigned int i = series.rows.size() - 10; i < series.rows.size(); ++i)
+    double             dl = 0, da = 0;
+    const unsigned int n = series.rows.size();
+    for (unsigned int i = n < 10 ? 0 : n - 10; i < n; ++i)
       {
         dl = std::max(dl, std::abs(series.value("contour_length", i) / L - 1));
         da = std::max(da, std::abs(series.value("contour_area", i) / A - 1));
