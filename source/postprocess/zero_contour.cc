@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 
 namespace vesicle_iga
@@ -35,28 +36,45 @@ namespace vesicle_iga
                       const std::vector<double> &natural,
                       const unsigned int         n_components,
                       const unsigned int         component,
-                      const unsigned int         samples)
+                      const unsigned int         samples_per_element)
         : space(space)
         , natural(natural)
         , n_components(n_components)
         , component(component)
+        , samples(samples_per_element)
         , x(sample_coordinates(space.knot_vector(0), samples))
         , y(sample_coordinates(space.knot_vector(1), samples))
         , nx(x.size())
         , ny(y.size())
-        , node_value(nx * ny)
+        , node_value(nx * ny, std::numeric_limits<double>::quiet_NaN())
       {
+        // A B-spline lies in the convex hull of its coefficients: on an
+        // element whose coefficients all have one sign (>= 0, or < 0) no
+        // sample cell changes sign, so only the other elements are sampled,
+        // and their nodes evaluated when first needed. The tolerance is
+        // relative to the coefficients' range, which bounds the field's.
         double range = 0;
-        for (unsigned int j = 0; j < ny; ++j)
-          for (unsigned int i = 0; i < nx; ++i)
-            {
-              node_value[j * nx + i] = value({x[i], y[j]});
-              range = std::max(range, std::abs(node_value[j * nx + i]));
-            }
+        for (unsigned int i = component; i < natural.size(); i += n_components)
+          range = std::max(range, std::abs(natural[i]));
         tolerance = 1e-12 * std::max(range, 1e-300);
-        for (unsigned int j = 0; j + 1 < ny; ++j)
-          for (unsigned int i = 0; i + 1 < nx; ++i)
-            add_cell(i, j);
+        std::vector<unsigned int> indices;
+        for (unsigned int e = 0; e < space.n_elements(); ++e)
+          {
+            space.element_basis_indices(e, indices);
+            bool all_negative = true, all_nonnegative = true;
+            for (const unsigned int i : indices)
+              {
+                const double c  = natural[i * n_components + component];
+                all_negative    = all_negative && c < 0;
+                all_nonnegative = all_nonnegative && c >= 0;
+              }
+            if (all_negative || all_nonnegative)
+              continue;
+            const auto element = space.element_multi_index(e);
+            for (unsigned int j = 0; j < samples; ++j)
+              for (unsigned int i = 0; i < samples; ++i)
+                add_cell(element[0] * samples + i, element[1] * samples + j);
+          }
       }
 
       /// The chained pieces, each as its sequence of crossing points.
@@ -105,6 +123,16 @@ namespace vesicle_iga
       }
 
     private:
+      /// The field at sample node (i, j), evaluated on first use.
+      double
+      node(const unsigned int i, const unsigned int j)
+      {
+        double &v = node_value[j * nx + i];
+        if (std::isnan(v))
+          v = value({x[i], y[j]});
+        return v;
+      }
+
       /// Global id of the edge from node (i, j) along direction d.
       long
       edge_id(const unsigned int i,
@@ -118,10 +146,8 @@ namespace vesicle_iga
       void
       add_cell(const unsigned int i, const unsigned int j)
       {
-        const double v[4] = {node_value[j * nx + i],
-                             node_value[j * nx + i + 1],
-                             node_value[(j + 1) * nx + i + 1],
-                             node_value[(j + 1) * nx + i]};
+        const double v[4]
+          = {node(i, j), node(i + 1, j), node(i + 1, j + 1), node(i, j + 1)};
         // Edges: bottom (corners 0-1), right (1-2), top (3-2), left (0-3).
         const long edges[4]     = {edge_id(i, j, 0),
                                    edge_id(i + 1, j, 1),
@@ -191,6 +217,7 @@ namespace vesicle_iga
       const SplineSpace<2>             &space;
       const std::vector<double>        &natural;
       const unsigned int                n_components, component;
+      const unsigned int                samples;
       const std::vector<double>         x, y;
       const unsigned int                nx, ny;
       std::vector<double>               node_value;

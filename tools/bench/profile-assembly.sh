@@ -6,6 +6,14 @@
 # prints each function's share of the samples in that window, with the
 # window's length. Needs perf (linux-perf) and read access to perf events.
 #
+# WINDOW=stack instead keeps the samples whose call stack passes through
+# the engine's SystemAssembler (every Jacobian and residual-only pass, and
+# nothing else: for runs whose assemblies are spread over the time steps,
+# such as the phase-field row, tools/bench/phase-field-2d.prm), recorded
+# with DWARF call graphs at 1 kHz, and prints the share of the run's
+# samples in the assembly, then each innermost function's share of those.
+# Unwinding the stacks takes about 10 minutes for a 20 s run.
+#
 #   tools/bench/profile-assembly.sh PRM [LINES] [EXTRA-SETTINGS]
 #
 # e.g. the 2D p = 2 Poisson row of doc/performance.md at 1024^2 elements
@@ -30,6 +38,19 @@ trap 'rm -rf "$work"' EXIT
   echo "set Output directory = $work/out"
   printf '%s\n' "$extra"
 } >"$work/input.prm"
+if [ "${WINDOW:-kernel}" = stack ]; then
+  perf record -q -F 1000 --call-graph dwarf,16384 -o "$work/perf.data" \
+    build/vesicle-iga "$work/input.prm" >"$work/log" 2>&1
+  perf script -i "$work/perf.data" -F time,ip,sym 2>/dev/null |
+    awk 'BEGIN {RS = ""; FS = "\n"}
+      {n++; if ($0 !~ /SystemAssembler/) next; a++
+       leaf = $2; sub(/^[ \t]*[0-9a-f]+ /, "", leaf); sub(/ \(inlined\)$/, "", leaf)
+       gsub(/\(anonymous namespace\)::/, "", leaf); c[substr(leaf, 1, 100)]++}
+      END {printf "100.0%%  the assembly: %d of the run's %d samples (%.1f%%)\n", a, n, 100 * a / n
+           for (s in c) printf "%5.1f%%  %s\n", 100 * c[s] / a, s}' |
+    sort -rn | head -n "$lines"
+  exit 0
+fi
 perf record -q -F 5000 -o "$work/perf.data" build/vesicle-iga "$work/input.prm" \
   >"$work/log" 2>&1
 perf script -i "$work/perf.data" -F time,ip,sym -G 2>/dev/null |

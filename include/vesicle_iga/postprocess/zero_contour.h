@@ -45,9 +45,11 @@ namespace vesicle_iga
    * falsi on the spline itself (so the points lie on the spline's zero set to
    * 1e-12 of the field's range, not on a linear interpolant), the saddle
    * cells resolved by the cell-centre value, and the segments chained into
-   * curves (closed, or open where the set leaves the domain). Used for the
-   * membrane samples of spec 4.12 (lambda_i and p along phi_i = 0). Longest
-   * piece first.
+   * curves (closed, or open where the set leaves the domain). Only elements
+   * whose coefficients change sign are sampled: a B-spline lies in the
+   * convex hull of its coefficients, so no other element holds a crossing. Used
+   * for the membrane samples of spec 4.12 (lambda_i and p along phi_i = 0).
+   * Longest piece first.
    */
   std::vector<ZeroContour>
   zero_contours(const SplineSpace<2>      &space,
