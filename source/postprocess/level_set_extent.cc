@@ -1,4 +1,9 @@
+#include <deal.II/base/mpi.h>
+
 #include <vesicle_iga/postprocess/level_set_extent.h>
+
+#include <algorithm>
+#include <limits>
 
 namespace vesicle_iga
 {
@@ -60,6 +65,78 @@ namespace vesicle_iga
     return x.size() >= 2 ? x.back() - x.front() : 0.;
   }
 
+  template <int dim>
+  std::vector<double>
+  zero_crossing_bounds(const SplineDofHandler<dim>         &dofs,
+                       const TrilinosWrappers::MPI::Vector &ghosted,
+                       const unsigned int                   component,
+                       const dealii::Point<dim>            &through,
+                       const unsigned int                   d)
+  {
+    const SplineSpace<dim>          &space = dofs.get_space();
+    double                           first = std::numeric_limits<double>::max();
+    double                           last  = -first;
+    std::vector<std::vector<double>> c;
+    for (const unsigned int e : dofs.get_mesh().locally_owned_elements())
+      {
+        // The elements whose closure the line crosses: on a breakpoint both
+        // neighbours search, which can only repeat a crossing.
+        const auto lower   = space.element_lower_corner(e);
+        const auto length  = space.element_lengths(e);
+        bool       on_line = true;
+        for (unsigned int o = 0; o < dim; ++o)
+          if (o != d)
+            on_line = on_line && through[o] >= lower[o]
+                      && through[o] <= lower[o] + length[o];
+        if (!on_line)
+          continue;
+        get_element_coefficients(dofs, ghosted, e, c);
+        const auto phi_at = [&](const double s) {
+          dealii::Point<dim> x = through;
+          x[d]                 = s;
+          return space.evaluate_on_element(e, c[component], x);
+        };
+        // The 20 samples per element and the bisection of the global
+        // zero_crossings_along_axis(), within this element.
+        const double a = lower[d], h = length[d] / 20;
+        double       s0 = a, f0 = phi_at(a);
+        for (unsigned int i = 1; i <= 20; ++i)
+          {
+            const double s1 = i == 20 ? a + length[d] : a + i * h,
+                         f1 = phi_at(s1);
+            if ((f0 < 0) != (f1 < 0))
+              {
+                double lo = s0, hi = s1, flo = f0;
+                for (unsigned int k = 0; k < 50; ++k)
+                  {
+                    const double m = 0.5 * (lo + hi), fm = phi_at(m);
+                    if ((fm < 0) == (flo < 0))
+                      {
+                        lo  = m;
+                        flo = fm;
+                      }
+                    else
+                      hi = m;
+                  }
+                first = std::min(first, 0.5 * (lo + hi));
+                last  = std::max(last, 0.5 * (lo + hi));
+              }
+            s0 = s1;
+            f0 = f1;
+          }
+      }
+    const MPI_Comm comm = dofs.get_mesh().get_communicator();
+    first               = Utilities::MPI::min(first, comm);
+    last                = Utilities::MPI::max(last, comm);
+    // One crossing found twice (from both sides of a breakpoint) is one.
+    const auto  &z    = space.knot_vector(d).breakpoints();
+    const double span = z.back() - z.front();
+    if (!(last - first > 1e-12 * span))
+      return {};
+    return {first, last};
+  }
+
+
   template std::vector<double>
   zero_crossings_along_axis(const SplineSpace<2> &,
                             const std::vector<double> &,
@@ -80,4 +157,16 @@ namespace vesicle_iga
                         const std::vector<double> &,
                         const dealii::Point<3> &,
                         const unsigned int);
+  template std::vector<double>
+  zero_crossing_bounds(const SplineDofHandler<2> &,
+                       const TrilinosWrappers::MPI::Vector &,
+                       unsigned int,
+                       const dealii::Point<2> &,
+                       unsigned int);
+  template std::vector<double>
+  zero_crossing_bounds(const SplineDofHandler<3> &,
+                       const TrilinosWrappers::MPI::Vector &,
+                       unsigned int,
+                       const dealii::Point<3> &,
+                       unsigned int);
 } // namespace vesicle_iga

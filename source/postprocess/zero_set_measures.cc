@@ -1,3 +1,4 @@
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/tensor.h>
 
 #include <vesicle_iga/postprocess/edge_root.h>
@@ -6,6 +7,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
 #include <map>
 #include <numeric>
 
@@ -75,16 +77,10 @@ namespace vesicle_iga
     class ElementCutter
     {
     public:
-      ElementCutter(const SplineSpace<dim>    &space,
-                    const std::vector<double> &natural,
-                    const unsigned int         n_components,
-                    const unsigned int         component,
-                    const unsigned int         samples,
-                    const double               tolerance)
+      ElementCutter(const SplineSpace<dim> &space,
+                    const unsigned int      samples,
+                    const double            tolerance)
         : space(space)
-        , natural(natural)
-        , n_components(n_components)
-        , component(component)
         , samples(samples)
         , tolerance(tolerance)
       {
@@ -95,9 +91,13 @@ namespace vesicle_iga
         while (std::next_permutation(order.begin(), order.end()));
       }
 
+      /// Adds element @p e, on which @p field evaluates the spline.
       void
-      add(const unsigned int e, ZeroSetMeasures &m)
+      add(const unsigned int                               e,
+          const std::function<double(const Point<dim> &)> &field,
+          ZeroSetMeasures                                 &m)
       {
+        value                      = field;
         lower                      = space.element_lower_corner(e);
         step                       = space.element_lengths(e) / double(samples);
         const unsigned int n       = samples + 1;
@@ -156,13 +156,6 @@ namespace vesicle_iga
         return p;
       }
 
-      double
-      value(const Point<dim> &p) const
-      {
-        space.evaluate(natural, n_components, p, values);
-        return values[component];
-      }
-
       /// The zero of the spline between node a (phi < 0) and node b
       /// (phi >= 0), by the Illinois variant of regula falsi; cached, so
       /// that the simplices sharing the edge share the point.
@@ -205,17 +198,15 @@ namespace vesicle_iga
               const std::array<Point<dim>, dim + 1> &p,
               ZeroSetMeasures                       &m);
 
-      const SplineSpace<dim>                    &space;
-      const std::vector<double>                 &natural;
-      const unsigned int                         n_components, component;
-      const unsigned int                         samples;
-      const double                               tolerance;
-      std::vector<std::array<unsigned int, dim>> permutations;
-      Point<dim>                                 lower;
-      Tensor<1, dim>                             step;
-      std::vector<double>                        node_value;
+      const SplineSpace<dim>                                     &space;
+      const unsigned int                                          samples;
+      std::function<double(const Point<dim> &)>                   value;
+      const double                                                tolerance;
+      std::vector<std::array<unsigned int, dim>>                  permutations;
+      Point<dim>                                                  lower;
+      Tensor<1, dim>                                              step;
+      std::vector<double>                                         node_value;
       std::map<std::pair<unsigned int, unsigned int>, Point<dim>> crossings;
-      mutable std::vector<double>                                 values;
     };
 
 
@@ -277,6 +268,36 @@ namespace vesicle_iga
                   + tetrahedron_volume(a0, b0, b1, b2);
       m.boundary += triangle_area(a1, a2, b2) + triangle_area(a1, b2, b1);
     }
+
+    /// Element @p e with coefficients @p c of the component: counted whole
+    /// when they all lie below zero, cut when they change sign (a B-spline
+    /// lies in the convex hull of its coefficients).
+    template <int dim>
+    void
+    add_element(const SplineSpace<dim>                          &space,
+                ElementCutter<dim>                              &cutter,
+                const unsigned int                               e,
+                const std::vector<double>                       &c,
+                const std::function<double(const Point<dim> &)> &field,
+                ZeroSetMeasures                                 &m)
+    {
+      bool all_in = true, all_out = true;
+      for (const double v : c)
+        {
+          all_in  = all_in && v < 0;
+          all_out = all_out && v >= 0;
+        }
+      if (all_in)
+        {
+          const auto length = space.element_lengths(e);
+          double     volume = 1;
+          for (unsigned int d = 0; d < dim; ++d)
+            volume *= length[d];
+          m.inside += volume;
+        }
+      else if (!all_out)
+        cutter.add(e, field, m);
+    }
   } // namespace
 
 
@@ -291,35 +312,68 @@ namespace vesicle_iga
     double range = 0;
     for (unsigned int i = component; i < natural.size(); i += n_components)
       range = std::max(range, std::abs(natural[i]));
-    ElementCutter<dim>        cutter(space,
-                              natural,
-                              n_components,
-                              component,
+    ElementCutter<dim>                              cutter(space,
                               std::max(1u, samples_per_element),
                               1e-12 * std::max(range, 1e-300));
-    ZeroSetMeasures           m;
-    std::vector<unsigned int> indices;
+    ZeroSetMeasures                                 m;
+    std::vector<unsigned int>                       indices;
+    std::vector<double>                             values;
+    const std::function<double(const Point<dim> &)> field
+      = [&](const Point<dim> &p) {
+          space.evaluate(natural, n_components, p, values);
+          return values[component];
+        };
     for (unsigned int e = 0; e < space.n_elements(); ++e)
       {
         space.element_basis_indices(e, indices);
-        bool all_in = true, all_out = true;
+        std::vector<double> c;
         for (const unsigned int i : indices)
-          {
-            const double c = natural[i * n_components + component];
-            all_in         = all_in && c < 0;
-            all_out        = all_out && c >= 0;
-          }
-        if (all_in)
-          {
-            const auto length = space.element_lengths(e);
-            double     volume = 1;
-            for (unsigned int d = 0; d < dim; ++d)
-              volume *= length[d];
-            m.inside += volume;
-          }
-        else if (!all_out)
-          cutter.add(e, m);
+          c.push_back(natural[i * n_components + component]);
+        add_element(space, cutter, e, c, field, m);
       }
+    return m;
+  }
+
+
+  template <int dim>
+  ZeroSetMeasures
+  zero_set_measures(const SplineDofHandler<dim>         &dofs,
+                    const TrilinosWrappers::MPI::Vector &ghosted,
+                    const unsigned int                   component,
+                    const unsigned int                   samples_per_element)
+  {
+    const SplineSpace<dim> &space = dofs.get_space();
+    const MPI_Comm          comm  = dofs.get_mesh().get_communicator();
+    const auto             &own   = dofs.get_mesh().locally_owned_elements();
+    std::vector<std::vector<double>> c;
+    double                           range = 0;
+    for (const unsigned int e : own)
+      {
+        get_element_coefficients(dofs, ghosted, e, c);
+        for (const double v : c[component])
+          range = std::max(range, std::abs(v));
+      }
+    range = Utilities::MPI::max(range, comm);
+    ElementCutter<dim> cutter(space,
+                              std::max(1u, samples_per_element),
+                              1e-12 * std::max(range, 1e-300));
+    ZeroSetMeasures    m;
+    for (const unsigned int e : own)
+      {
+        get_element_coefficients(dofs, ghosted, e, c);
+        const std::vector<double> &coefficients = c[component];
+        add_element<dim>(
+          space,
+          cutter,
+          e,
+          coefficients,
+          [&](const Point<dim> &p) {
+            return space.evaluate_on_element(e, coefficients, p);
+          },
+          m);
+      }
+    m.boundary = Utilities::MPI::sum(m.boundary, comm);
+    m.inside   = Utilities::MPI::sum(m.inside, comm);
     return m;
   }
 
@@ -334,6 +388,16 @@ namespace vesicle_iga
   zero_set_measures(const SplineSpace<3> &,
                     const std::vector<double> &,
                     unsigned int,
+                    unsigned int,
+                    unsigned int);
+  template ZeroSetMeasures
+  zero_set_measures(const SplineDofHandler<2> &,
+                    const TrilinosWrappers::MPI::Vector &,
+                    unsigned int,
+                    unsigned int);
+  template ZeroSetMeasures
+  zero_set_measures(const SplineDofHandler<3> &,
+                    const TrilinosWrappers::MPI::Vector &,
                     unsigned int,
                     unsigned int);
 } // namespace vesicle_iga

@@ -206,6 +206,33 @@ namespace vesicle_iga
 
 
   template <int dim>
+  double
+  SplineSpace<dim>::evaluate_on_element(const unsigned int         e,
+                                        const std::vector<double> &c,
+                                        const Point<dim>          &xi) const
+  {
+    const auto                           element = element_multi_index(e);
+    std::array<std::vector<double>, dim> v1d;
+    for (unsigned int d = 0; d < dim; ++d)
+      v1d[d] = kv[d].evaluate_on_element(element[d], xi[d], 0)[0];
+    double value = 0;
+    for (unsigned int j = 0; j < n_per_element; ++j)
+      {
+        unsigned int r = j;
+        double       N = 1;
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            const unsigned int pd = kv[d].degree() + 1;
+            N *= v1d[d][r % pd];
+            r /= pd;
+          }
+        value += N * c[j];
+      }
+    return value;
+  }
+
+
+  template <int dim>
   bool
   SplineSpace<dim>::operator==(const SplineSpace<dim> &o) const
   {

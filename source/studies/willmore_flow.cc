@@ -95,30 +95,19 @@ namespace vesicle_iga
       void
       load(const Checkpoint &c, const std::string &prefix) override;
 
-      /// The extents of the zero level set through the centre, from the
-      /// solution's natural coefficients.
-      std::vector<double>
-      extents(const std::vector<double> &natural) const;
       std::vector<double>
       extents() const
       {
         const auto m = level_set_measures();
         return std::vector<double>(m.begin(), m.begin() + dim);
       }
-      /// The measures of the zero level set of the time series: the extents;
-      /// in 2D the sharp length, area and reduced area; with a potential
-      /// the midpoint along the field axis. Computed on rank 0 from the
-      /// solution gathered there, sent to every rank (collective).
+      /// The measures of the zero level set of the time series: the extents
+      /// through the centre; in 2D the sharp length, area and reduced area;
+      /// with a potential the midpoint along the field axis. Each rank
+      /// evaluates its own elements; only crossings and segments are
+      /// combined (collective; every rank gets the values).
       std::vector<double>
       level_set_measures() const;
-
-      /// 2D: length, enclosed area and reduced area 4 pi A / L^2 of the
-      /// longest closed piece of the zero level set; 3D: area of the zero
-      /// surface, volume of {phi < 0} and reduced volume 6 sqrt(pi) V /
-      /// A^(3/2) (the sharp measures that the diffuse (E9) approximate;
-      /// issue 16, item 1).
-      std::array<double, 3>
-      zero_level_set_geometry(const std::vector<double> &natural) const;
 
       double max_constraint_error = 0, max_energy_increase = 0,
              max_lagrangian_increase = 0;
@@ -193,64 +182,50 @@ namespace vesicle_iga
 
     template <int dim>
     std::vector<double>
-    WillmoreMonitor<dim>::extents(const std::vector<double> &c) const
-    {
-      std::vector<double> e;
-      for (unsigned int d = 0; d < dim; ++d)
-        e.push_back(
-          zero_level_set_extent(model.get_dofs().get_space(), c, s.center, d));
-      return e;
-    }
-
-
-    template <int dim>
-    std::vector<double>
     WillmoreMonitor<dim>::level_set_measures() const
     {
-      const auto natural
-        = gather_natural_on_rank_0(model.get_dofs(), model.solution());
+      const auto                   &dofs = model.get_dofs();
+      const MPI_Comm                comm = dofs.get_mesh().get_communicator();
+      TrilinosWrappers::MPI::Vector phi(dofs.locally_owned_dofs(),
+                                        dofs.locally_relevant_dofs(),
+                                        comm);
+      phi = model.solution();
       std::vector<double> m;
-      if (!natural.empty())
+      for (unsigned int d = 0; d < dim; ++d)
         {
-          m = extents(natural);
-          for (const double g : zero_level_set_geometry(natural))
-            m.push_back(g);
-          if (model.potential())
-            {
-              const auto x
-                = zero_crossings_along_axis(model.get_dofs().get_space(),
-                                            natural,
-                                            s.center,
-                                            material.direction());
-              m.push_back(x.size() >= 2 ? 0.5 * (x.front() + x.back()) : 0.);
-            }
+          const auto x = zero_crossing_bounds(dofs, phi, 0, s.center, d);
+          m.push_back(x.empty() ? 0. : x[1] - x[0]);
         }
-      return Utilities::MPI::broadcast(
-        model.get_dofs().get_mesh().get_communicator(), m, 0);
-    }
-
-
-    template <int dim>
-    std::array<double, 3>
-    WillmoreMonitor<dim>::zero_level_set_geometry(
-      const std::vector<double> &c) const
-    {
+      // 2D: the longest closed piece of the zero level set; 3D: the area of
+      // the zero surface, the volume of {phi < 0} and the reduced volume
+      // 6 sqrt(pi) V / A^(3/2) (the sharp measures that the diffuse (E9)
+      // approximate; issue 16, item 1).
+      std::array<double, 3> geometry{{0., 0., 0.}};
       if constexpr (dim == 2)
         {
-          for (const ZeroContour &piece :
-               zero_contours(model.get_dofs().get_space(), c, 1, 0, 8))
+          for (const ZeroContour &piece : zero_contours(dofs, phi, 0, 8))
             if (piece.closed)
-              return {{piece.length(),
-                       std::abs(piece.enclosed_area()),
-                       piece.reduced_area()}};
+              {
+                geometry = {{piece.length(),
+                             std::abs(piece.enclosed_area()),
+                             piece.reduced_area()}};
+                break;
+              }
+          geometry = Utilities::MPI::broadcast(comm, geometry, 0);
         }
       else
         {
-          const ZeroSetMeasures m
-            = zero_set_measures(model.get_dofs().get_space(), c, 1, 0, 4);
-          return {{m.boundary, m.inside, m.reduced(dim)}};
+          const ZeroSetMeasures z = zero_set_measures(dofs, phi, 0, 4);
+          geometry                = {{z.boundary, z.inside, z.reduced(dim)}};
         }
-      return {{0., 0., 0.}};
+      m.insert(m.end(), geometry.begin(), geometry.end());
+      if (model.potential())
+        {
+          const auto x = zero_crossing_bounds(
+            dofs, phi, 0, s.center, material.direction());
+          m.push_back(x.empty() ? 0. : 0.5 * (x[0] + x[1]));
+        }
+      return m;
     }
 
 

@@ -2,6 +2,9 @@
 
 #include <deal.II/base/point.h>
 
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <vesicle_iga/fields/spline_dof_handler.h>
 #include <vesicle_iga/spline/spline_space.h>
 
 #include <string>
@@ -57,4 +60,19 @@ namespace vesicle_iga
                 const unsigned int         n_components,
                 const unsigned int         component,
                 const unsigned int         samples_per_element = 4);
+
+  /**
+   * The same pieces for component @p component of a distributed field
+   * (@p ghosted: locally relevant coefficients in the numbering of
+   * @p dofs): each rank runs the marching squares on its own elements with
+   * their own coefficients, and only the segments and their crossing
+   * points are gathered and chained on rank 0, which returns the pieces
+   * without values (the other ranks return none). Collective; no rank
+   * holds the whole field.
+   */
+  std::vector<ZeroContour>
+  zero_contours(const SplineDofHandler<2>                   &dofs,
+                const dealii::TrilinosWrappers::MPI::Vector &ghosted,
+                const unsigned int                           component,
+                const unsigned int samples_per_element = 4);
 } // namespace vesicle_iga

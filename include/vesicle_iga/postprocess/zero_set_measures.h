@@ -1,5 +1,8 @@
 #pragma once
 
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <vesicle_iga/fields/spline_dof_handler.h>
 #include <vesicle_iga/spline/spline_space.h>
 
 #include <vector>
@@ -49,4 +52,18 @@ namespace vesicle_iga
                     const unsigned int         n_components,
                     const unsigned int         component,
                     const unsigned int         samples_per_element = 4);
+
+  /**
+   * The same measures of component @p component of a distributed field
+   * (@p ghosted: the locally relevant coefficients in the numbering of
+   * @p dofs), each rank cutting its own elements with their own
+   * coefficients; summed over the ranks (collective). No rank holds the
+   * whole field.
+   */
+  template <int dim>
+  ZeroSetMeasures
+  zero_set_measures(const SplineDofHandler<dim>                 &dofs,
+                    const dealii::TrilinosWrappers::MPI::Vector &ghosted,
+                    const unsigned int                           component,
+                    const unsigned int samples_per_element = 4);
 } // namespace vesicle_iga

@@ -105,6 +105,16 @@ namespace vesicle_iga
              const dealii::Point<dim>  &xi,
              std::vector<double>       &values) const;
 
+    /// The same sum on element @p e only, from the element's own
+    /// coefficients (one component, local numbering of
+    /// element_basis_indices()): what a rank can evaluate on its own
+    /// elements without the whole field. @p xi may lie on the element's
+    /// boundary.
+    double
+    evaluate_on_element(const unsigned int         e,
+                        const std::vector<double> &element_coefficients,
+                        const dealii::Point<dim>  &xi) const;
+
     /// Same knot vectors in every direction?
     bool
     operator==(const SplineSpace<dim> &other) const;
