@@ -9,6 +9,49 @@ namespace vesicle_iga
 {
   using namespace dealii;
 
+  namespace
+  {
+    /**
+     * Where the restriction @p f of the level-set function to a line
+     * changes sign in [@p a, @p b]: each of @p n equal intervals whose end
+     * values differ in sign is bisected 50 times. Shared by the global
+     * search along an axis and the search within one element.
+     */
+    template <typename Function>
+    std::vector<double>
+    sign_changes(const Function    &f,
+                 const double       a,
+                 const double       b,
+                 const unsigned int n)
+    {
+      std::vector<double> crossings;
+      double              s0 = a, f0 = f(a);
+      for (unsigned int i = 1; i <= n; ++i)
+        {
+          const double s1 = i == n ? b : a + (b - a) * i / n, f1 = f(s1);
+          if ((f0 < 0) != (f1 < 0))
+            {
+              double lo = s0, hi = s1, flo = f0;
+              for (unsigned int k = 0; k < 50; ++k)
+                {
+                  const double m = 0.5 * (lo + hi), fm = f(m);
+                  if ((fm < 0) == (flo < 0))
+                    {
+                      lo  = m;
+                      flo = fm;
+                    }
+                  else
+                    hi = m;
+                }
+              crossings.push_back(0.5 * (lo + hi));
+            }
+          s0 = s1;
+          f0 = f1;
+        }
+      return crossings;
+    }
+  } // namespace
+
   template <int dim>
   std::vector<double>
   zero_crossings_along_axis(const SplineSpace<dim>    &space,
@@ -23,34 +66,11 @@ namespace vesicle_iga
       space.evaluate(c, 1, x, value);
       return value[0];
     };
-    const auto         &z = space.knot_vector(d).breakpoints();
-    const double        a = z.front(), b = z.back();
-    const unsigned int  n = 20 * space.knot_vector(d).n_elements();
-    std::vector<double> crossings;
-    double              s0 = a, f0 = phi_at(a);
-    for (unsigned int i = 1; i <= n; ++i)
-      {
-        const double s1 = a + (b - a) * i / n, f1 = phi_at(s1);
-        if ((f0 < 0) != (f1 < 0))
-          {
-            double lo = s0, hi = s1, flo = f0;
-            for (unsigned int k = 0; k < 50; ++k)
-              {
-                const double m = 0.5 * (lo + hi), fm = phi_at(m);
-                if ((fm < 0) == (flo < 0))
-                  {
-                    lo  = m;
-                    flo = fm;
-                  }
-                else
-                  hi = m;
-              }
-            crossings.push_back(0.5 * (lo + hi));
-          }
-        s0 = s1;
-        f0 = f1;
-      }
-    return crossings;
+    const auto &z = space.knot_vector(d).breakpoints();
+    return sign_changes(phi_at,
+                        z.front(),
+                        z.back(),
+                        20 * space.knot_vector(d).n_elements());
   }
 
 
@@ -96,33 +116,13 @@ namespace vesicle_iga
           x[d]                 = s;
           return space.evaluate_on_element(e, c[component], x);
         };
-        // The 20 samples per element and the bisection of the global
+        // The 20 samples per element of the global
         // zero_crossings_along_axis(), within this element.
-        const double a = lower[d], h = length[d] / 20;
-        double       s0 = a, f0 = phi_at(a);
-        for (unsigned int i = 1; i <= 20; ++i)
+        for (const double x :
+             sign_changes(phi_at, lower[d], lower[d] + length[d], 20))
           {
-            const double s1 = i == 20 ? a + length[d] : a + i * h,
-                         f1 = phi_at(s1);
-            if ((f0 < 0) != (f1 < 0))
-              {
-                double lo = s0, hi = s1, flo = f0;
-                for (unsigned int k = 0; k < 50; ++k)
-                  {
-                    const double m = 0.5 * (lo + hi), fm = phi_at(m);
-                    if ((fm < 0) == (flo < 0))
-                      {
-                        lo  = m;
-                        flo = fm;
-                      }
-                    else
-                      hi = m;
-                  }
-                first = std::min(first, 0.5 * (lo + hi));
-                last  = std::max(last, 0.5 * (lo + hi));
-              }
-            s0 = s1;
-            f0 = f1;
+            first = std::min(first, x);
+            last  = std::max(last, x);
           }
       }
     const MPI_Comm comm = dofs.get_mesh().get_communicator();

@@ -1,5 +1,6 @@
 #include <deal.II/base/mpi.h>
 
+#include <vesicle_iga/postprocess/crossing_tolerance.h>
 #include <vesicle_iga/postprocess/edge_root.h>
 #include <vesicle_iga/postprocess/zero_contour.h>
 
@@ -340,12 +341,11 @@ namespace vesicle_iga
                 const unsigned int         component,
                 const unsigned int         samples_per_element)
   {
-    double range = 0;
-    for (unsigned int i = component; i < natural.size(); i += n_components)
-      range = std::max(range, std::abs(natural[i]));
     MarchingSquares              squares(space,
                             samples_per_element,
-                            1e-12 * std::max(range, 1e-300));
+                            crossing_tolerance(natural,
+                                               n_components,
+                                               component));
     std::vector<double>          values;
     const MarchingSquares::Field field = [&](const Point<2> &p) {
       space.evaluate(natural, n_components, p, values);
@@ -384,17 +384,9 @@ namespace vesicle_iga
     const MPI_Comm        comm  = dofs.get_mesh().get_communicator();
     const auto           &own   = dofs.get_mesh().locally_owned_elements();
     std::vector<std::vector<double>> c;
-    double                           range = 0;
-    for (const unsigned int e : own)
-      {
-        get_element_coefficients(dofs, ghosted, e, c);
-        for (const double v : c[component])
-          range = std::max(range, std::abs(v));
-      }
-    range = Utilities::MPI::max(range, comm);
-    MarchingSquares squares(space,
+    MarchingSquares                  squares(space,
                             samples_per_element,
-                            1e-12 * std::max(range, 1e-300));
+                            crossing_tolerance(dofs, ghosted, component));
     for (const unsigned int e : own)
       {
         get_element_coefficients(dofs, ghosted, e, c);

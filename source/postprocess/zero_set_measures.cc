@@ -1,6 +1,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/tensor.h>
 
+#include <vesicle_iga/postprocess/crossing_tolerance.h>
 #include <vesicle_iga/postprocess/edge_root.h>
 #include <vesicle_iga/postprocess/zero_set_measures.h>
 
@@ -309,12 +310,11 @@ namespace vesicle_iga
                     const unsigned int         component,
                     const unsigned int         samples_per_element)
   {
-    double range = 0;
-    for (unsigned int i = component; i < natural.size(); i += n_components)
-      range = std::max(range, std::abs(natural[i]));
     ElementCutter<dim>                              cutter(space,
                               std::max(1u, samples_per_element),
-                              1e-12 * std::max(range, 1e-300));
+                              crossing_tolerance(natural,
+                                                 n_components,
+                                                 component));
     ZeroSetMeasures                                 m;
     std::vector<unsigned int>                       indices;
     std::vector<double>                             values;
@@ -346,18 +346,10 @@ namespace vesicle_iga
     const MPI_Comm          comm  = dofs.get_mesh().get_communicator();
     const auto             &own   = dofs.get_mesh().locally_owned_elements();
     std::vector<std::vector<double>> c;
-    double                           range = 0;
-    for (const unsigned int e : own)
-      {
-        get_element_coefficients(dofs, ghosted, e, c);
-        for (const double v : c[component])
-          range = std::max(range, std::abs(v));
-      }
-    range = Utilities::MPI::max(range, comm);
-    ElementCutter<dim> cutter(space,
+    ElementCutter<dim>               cutter(space,
                               std::max(1u, samples_per_element),
-                              1e-12 * std::max(range, 1e-300));
-    ZeroSetMeasures    m;
+                              crossing_tolerance(dofs, ghosted, component));
+    ZeroSetMeasures                  m;
     for (const unsigned int e : own)
       {
         get_element_coefficients(dofs, ghosted, e, c);

@@ -7,6 +7,43 @@ namespace vesicle_iga
 {
   using namespace dealii;
 
+  namespace
+  {
+    /**
+     * The values at @p xi of the tensor-product basis functions that do
+     * not vanish on the element with multi-index @p element, in the
+     * element's local order (first direction fastest): the products of the
+     * univariate values. Shared by SplineSpace::evaluate() and
+     * SplineSpace::evaluate_on_element().
+     */
+    template <int dim>
+    std::vector<double>
+    element_basis_values(const std::array<KnotVector, dim>   &kv,
+                         const std::array<unsigned int, dim> &element,
+                         const Point<dim>                    &xi)
+    {
+      std::array<std::vector<double>, dim> v1d;
+      unsigned int                         n = 1;
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          v1d[d] = kv[d].evaluate_on_element(element[d], xi[d], 0)[0];
+          n *= v1d[d].size();
+        }
+      std::vector<double> N(n, 1.);
+      for (unsigned int j = 0; j < n; ++j)
+        {
+          unsigned int r = j;
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              const unsigned int pd = v1d[d].size();
+              N[j] *= v1d[d][r % pd];
+              r /= pd;
+            }
+        }
+      return N;
+    }
+  } // namespace
+
   template <int dim>
   SplineSpace<dim>::SplineSpace(const std::array<KnotVector, dim> &kvs)
     : kv(kvs)
@@ -179,29 +216,16 @@ namespace vesicle_iga
                              const Point<dim>          &xi,
                              std::vector<double>       &values) const
   {
-    std::array<std::vector<double>, dim> v1d;
-    std::array<unsigned int, dim>        em;
+    std::array<unsigned int, dim> em;
     for (unsigned int d = 0; d < dim; ++d)
-      {
-        em[d]  = kv[d].find_element(xi[d]);
-        v1d[d] = kv[d].evaluate_on_element(em[d], xi[d], 0)[0];
-      }
+      em[d] = kv[d].find_element(xi[d]);
+    const std::vector<double> N = element_basis_values<dim>(kv, em, xi);
     std::vector<unsigned int> indices;
     element_basis_indices(element_index(em), indices);
     values.assign(nc, 0.);
     for (unsigned int j = 0; j < n_per_element; ++j)
-      {
-        unsigned int r = j;
-        double       N = 1;
-        for (unsigned int d = 0; d < dim; ++d)
-          {
-            const unsigned int pd = kv[d].degree() + 1;
-            N *= v1d[d][r % pd];
-            r /= pd;
-          }
-        for (unsigned int c_ = 0; c_ < nc; ++c_)
-          values[c_] += N * c[indices[j] * nc + c_];
-      }
+      for (unsigned int c_ = 0; c_ < nc; ++c_)
+        values[c_] += N[j] * c[indices[j] * nc + c_];
   }
 
 
@@ -211,23 +235,11 @@ namespace vesicle_iga
                                         const std::vector<double> &c,
                                         const Point<dim>          &xi) const
   {
-    const auto                           element = element_multi_index(e);
-    std::array<std::vector<double>, dim> v1d;
-    for (unsigned int d = 0; d < dim; ++d)
-      v1d[d] = kv[d].evaluate_on_element(element[d], xi[d], 0)[0];
+    const std::vector<double> N
+      = element_basis_values<dim>(kv, element_multi_index(e), xi);
     double value = 0;
     for (unsigned int j = 0; j < n_per_element; ++j)
-      {
-        unsigned int r = j;
-        double       N = 1;
-        for (unsigned int d = 0; d < dim; ++d)
-          {
-            const unsigned int pd = kv[d].degree() + 1;
-            N *= v1d[d][r % pd];
-            r /= pd;
-          }
-        value += N * c[j];
-      }
+      value += N[j] * c[j];
     return value;
   }
 
