@@ -144,6 +144,8 @@ namespace vesicle_iga
       report.krylov_iterations += r.iterations;
       report.linear_residual = r.residual;
       ++report.iterations;
+      const double x_norm = x.l2_norm(), dx_norm = increment.l2_norm();
+      report.relative_step = x_norm > 0 ? dx_norm / x_norm : dx_norm;
       if (print
           && Utilities::MPI::this_mpi_process(x.get_mpi_communicator()) == 0)
         std::cout << "    Newton " << report.iterations << ": |R| "
@@ -151,9 +153,10 @@ namespace vesicle_iga
                   << report.residual / report.initial_residual
                   << " of the first), " << r.iterations
                   << " Krylov iterations to " << r.residual << ", "
-                  << (new_jacobian ? "new" : "kept") << " Jacobian"
+                  << (new_jacobian ? "new" : "kept") << " Jacobian, |dx| "
+                  << dx_norm << " (" << report.relative_step << " of |x|)"
                   << std::endl;
-      if (!std::isfinite(increment.l2_norm()))
+      if (!std::isfinite(dx_norm))
         throw SolverFailure(
           describe("the Newton update is not finite", report));
       x += increment;
