@@ -144,8 +144,10 @@ namespace vesicle_iga
       report.krylov_iterations += r.iterations;
       report.linear_residual = r.residual;
       ++report.iterations;
-      const double x_norm = x.l2_norm(), dx_norm = increment.l2_norm();
-      report.relative_step = x_norm > 0 ? dx_norm / x_norm : dx_norm;
+      const double dx_norm = increment.l2_norm();
+      // |x| only for the diagnostic line (a collective reduction: every
+      // rank computes it, rank 0 prints).
+      const double x_norm = print ? x.l2_norm() : 0;
       if (print
           && Utilities::MPI::this_mpi_process(x.get_mpi_communicator()) == 0)
         std::cout << "    Newton " << report.iterations << ": |R| "
@@ -154,7 +156,7 @@ namespace vesicle_iga
                   << " of the first), " << r.iterations
                   << " Krylov iterations to " << r.residual << ", "
                   << (new_jacobian ? "new" : "kept") << " Jacobian, |dx| "
-                  << dx_norm << " (" << report.relative_step << " of |x|)"
+                  << dx_norm << " (" << dx_norm / x_norm << " of |x|)"
                   << std::endl;
       if (!std::isfinite(dx_norm))
         throw SolverFailure(

@@ -95,8 +95,6 @@ namespace vesicle_iga
     double       initial_residual = 0, residual = 0;
     /// Relative residual of the last Krylov solve.
     double linear_residual = 0;
-    /// |dx| / |x| of the last correction (0 before the first).
-    double relative_step = 0;
   };
 
 
