@@ -18,19 +18,24 @@ namespace vesicle_iga
   namespace
   {
     /// Per vesicle: A (H12c), V, and the zeroth, first and second moments
-    /// of the indicator c = (1 + phi) / 2 (spec 4.12).
+    /// of the indicator c = (1 + phi) / 2 (spec 4.12). The sums: 0 A, 1 V,
+    /// 2 int c, 3-4 the x and y first moments, 5-7 the x-y second moments,
+    /// 8-11 the circular moments of periodic x and y, in 3D 12 the z first
+    /// moment and 13-14 the circular moments of periodic z.
     template <int dim>
     class VesicleGeometry : public Integrand<dim>
     {
     public:
+      static constexpr unsigned int n_sums = dim == 2 ? 12 : 15;
+
       /// Moments about @p reference; in a direction of period
       /// `box.period[k]` > 0 the coordinate is wrapped into
       /// [-period / 2, period / 2) about it, and the circular moments
-      /// int c cos, int c sin of that direction are added (sums 8-11).
+      /// int c cos, int c sin of that direction are added.
       VesicleGeometry(const unsigned int phi,
                       const double       eps,
                       const PeriodicBox &box,
-                      const Point<2>    &reference)
+                      const Point<dim>  &reference)
         : phi(phi)
         , eps(eps)
         , box(box)
@@ -39,7 +44,14 @@ namespace vesicle_iga
       unsigned int
       n_values() const override
       {
-        return 12;
+        return n_sums;
+      }
+      /// The index of the circular moments (cos; sin is the next) of
+      /// direction k.
+      static unsigned int
+      circular(const unsigned int k)
+      {
+        return k < 2 ? 8 + 2 * k : 13;
       }
       void
       declare(TermDeclaration<dim> &d) override
@@ -61,8 +73,8 @@ namespace vesicle_iga
             for (unsigned int k = 0; k < dim; ++k)
               g2 += in[gradient[k]][q] * in[gradient[k]][q];
             const double c = 0.5 * (1 + p), w = JxW[q];
-            double       r[2];
-            for (unsigned int k = 0; k < 2; ++k)
+            double       r[dim];
+            for (unsigned int k = 0; k < dim; ++k)
               {
                 const double x = in.point(q)[k];
                 r[k]           = x - reference[k];
@@ -72,8 +84,8 @@ namespace vesicle_iga
                       -= box.period[k] * std::floor(r[k] / box.period[k] + 0.5);
                     const double angle
                       = 2 * numbers::PI * (x - box.lower[k]) / box.period[k];
-                    sums[8 + 2 * k] += c * std::cos(angle) * w;
-                    sums[9 + 2 * k] += c * std::sin(angle) * w;
+                    sums[circular(k)] += c * std::cos(angle) * w;
+                    sums[circular(k) + 1] += c * std::sin(angle) * w;
                   }
               }
             sums[0]
@@ -85,6 +97,8 @@ namespace vesicle_iga
             sums[5] += c * r[0] * r[0] * w;
             sums[6] += c * r[0] * r[1] * w;
             sums[7] += c * r[1] * r[1] * w;
+            if constexpr (dim == 3)
+              sums[12] += c * r[2] * w;
           }
       }
 
@@ -92,7 +106,7 @@ namespace vesicle_iga
       const unsigned int           phi;
       const double                 eps;
       const PeriodicBox            box;
-      const Point<2>               reference;
+      const Point<dim>             reference;
       InputHandle                  value;
       std::array<InputHandle, dim> gradient;
     };
@@ -340,7 +354,7 @@ namespace vesicle_iga
     , lambda_g_rate(n_vesicles)
     , lambda_v_rate(n_vesicles)
   {
-    for (unsigned int k = 0; k < 2; ++k)
+    for (unsigned int k = 0; k < dim; ++k)
       if (space.knot_vector(k).is_periodic())
         {
           const auto &breaks     = space.knot_vector(k).breakpoints();
@@ -557,18 +571,21 @@ namespace vesicle_iga
     // coordinate wrapped into one period, so that a vesicle's tails seen
     // through the seam (or a vesicle crossing it) do not pull it across the
     // box.
-    const bool periodic
-      = periodic_box.period[0] > 0 || periodic_box.period[1] > 0;
-    std::vector<Point<2>> references(n);
+    bool periodic = false;
+    for (unsigned int k = 0; k < dim; ++k)
+      periodic = periodic || periodic_box.period[k] > 0;
+    constexpr unsigned int  n_sums = VesicleGeometry<dim>::n_sums;
+    std::vector<Point<dim>> references(n);
     if (periodic)
       {
         const auto sums = integrate_geometry(references, false);
         for (unsigned int i = 0; i < n; ++i)
-          for (unsigned int k = 0; k < 2; ++k)
+          for (unsigned int k = 0; k < dim; ++k)
             if (periodic_box.period[k] > 0)
               {
-                double angle = std::atan2(sums[12 * i + 9 + 2 * k],
-                                          sums[12 * i + 8 + 2 * k]);
+                const unsigned int j = VesicleGeometry<dim>::circular(k);
+                double             angle
+                  = std::atan2(sums[n_sums * i + j + 1], sums[n_sums * i + j]);
                 if (angle < 0)
                   angle += 2 * numbers::PI;
                 references[i][k]
@@ -580,13 +597,16 @@ namespace vesicle_iga
     std::vector<VesicleMeasures> result(n);
     for (unsigned int i = 0; i < n; ++i)
       {
-        const double *s = &sums[12 * i];
-        const double *b = &sums[12 * n + i];
+        const double *s = &sums[n_sums * i];
+        const double *b = &sums[n_sums * n + i];
         auto         &m = result[i];
         m.area          = s[0];
         m.volume        = s[1];
         const double dx = s[3] / s[2], dy = s[4] / s[2];
-        m.centroid = Point<2>(references[i][0] + dx, references[i][1] + dy);
+        m.centroid[0] = references[i][0] + dx;
+        m.centroid[1] = references[i][1] + dy;
+        if constexpr (dim == 3)
+          m.centroid[2] = references[i][2] + s[12] / s[2];
         const double Ixx = s[5] / s[2] - dx * dx;
         const double Ixy = s[6] / s[2] - dx * dy;
         const double Iyy = s[7] / s[2] - dy * dy;
@@ -605,8 +625,8 @@ namespace vesicle_iga
   template <int dim>
   std::vector<double>
   VesicleHydrodynamics<dim>::integrate_geometry(
-    const std::vector<Point<2>> &references,
-    const bool                   with_bending_energy) const
+    const std::vector<Point<dim>> &references,
+    const bool                     with_bending_energy) const
   {
     std::vector<std::unique_ptr<Integrand<dim>>> owned;
     for (unsigned int i = 0; i < n; ++i)
@@ -698,7 +718,7 @@ namespace vesicle_iga
     // A_i and V_i (the first two geometry sums) in the same pass.
     for (unsigned int i = 0; i < n; ++i)
       owned.push_back(std::make_unique<VesicleGeometry<dim>>(
-        phase(i), membrane.epsilon, periodic_box, Point<2>()));
+        phase(i), membrane.epsilon, periodic_box, Point<dim>()));
     for (auto &o : owned)
       list.push_back(o.get());
     AssemblyState state;
@@ -717,8 +737,11 @@ namespace vesicle_iga
         double b_g = s[4] / eta + s[6] + s[8];
         if (dt > 0)
           {
-            b_v += (volume_0[i] - geometry[12 * i + 1]) / (2 * dt);
-            b_g -= (area_0[i] - geometry[12 * i]) / (2 * dt);
+            b_v
+              += (volume_0[i] - geometry[VesicleGeometry<dim>::n_sums * i + 1])
+                 / (2 * dt);
+            b_g -= (area_0[i] - geometry[VesicleGeometry<dim>::n_sums * i])
+                   / (2 * dt);
           }
         const double det = s[0] * s[2] - s[1] * s[9];
         AssertThrow(det > 0,

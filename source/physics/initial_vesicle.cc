@@ -1,4 +1,4 @@
-// Initial vesicles of Part H, spec (H22)-(H23) and 4.11.
+// Initial vesicles of Part H, spec (H22)-(H23) and 4.11, in 2D and 3D.
 
 #include <deal.II/base/quadrature_lib.h>
 
@@ -10,20 +10,8 @@ namespace vesicle_iga
 {
   using namespace dealii;
 
-  InitialVesicle::InitialVesicle(const Point<2>      &centre,
-                                 const double         radius,
-                                 const double         reduced_area,
-                                 const double         angle_degrees,
-                                 const StretchFormula formula)
-    : centre(centre)
-    , radius(radius)
-    , gamma(stretch_for(reduced_area, formula))
-    , angle(angle_degrees * M_PI / 180.)
-  {}
-
-
   double
-  InitialVesicle::ellipse_perimeter(const double a, const double b)
+  InitialVesicleBase::ellipse_perimeter(const double a, const double b)
   {
     // P = 4 int_0^{pi/2} sqrt(a^2 sin^2 t + b^2 cos^2 t) dt: the integrand
     // is analytic, so composite Gauss converges exponentially.
@@ -43,73 +31,202 @@ namespace vesicle_iga
 
 
   double
-  InitialVesicle::stretch_for(const double chi, const StretchFormula formula)
+  InitialVesicleBase::prolate_spheroid_area(const double c, const double a)
   {
-    if (chi >= 1)
+    const double e = std::sqrt(std::max(0., 1 - a * a / (c * c)));
+    // A = 2 pi a^2 (1 + c asin(e) / (a e)); asin(e) / e -> 1 as e -> 0.
+    const double ratio = e < 1e-8 ? 1 + e * e / 6 : std::asin(e) / e;
+    return 2 * M_PI * a * a * (1 + c / a * ratio);
+  }
+
+
+  namespace
+  {
+    /// The reduced area (2D) or volume (3D) of the shape with stretch g
+    /// and equal-measure radius 1.
+    template <int dim>
+    double
+    reduced_measure(const double g)
+    {
+      if constexpr (dim == 2)
+        {
+          const double P = InitialVesicleBase::ellipse_perimeter(1 / g, g);
+          return 4 * M_PI * M_PI / (P * P);
+        }
+      else
+        {
+          const double A
+            = InitialVesicleBase::prolate_spheroid_area(g * g, 1 / g);
+          return 6 * std::sqrt(M_PI) * (4 * M_PI / 3) / std::pow(A, 1.5);
+        }
+    }
+  } // namespace
+
+
+  template <int dim>
+  InitialVesicle<dim>::InitialVesicle(const Point<dim>    &centre,
+                                      const double         radius,
+                                      const double         reduced,
+                                      const double         angle_degrees,
+                                      const StretchFormula formula)
+    : centre(centre)
+    , radius(radius)
+    , gamma(stretch_for(reduced, formula))
+    , angle(angle_degrees * M_PI / 180.)
+  {}
+
+
+  template <int dim>
+  double
+  InitialVesicle<dim>::stretch_for(const double         reduced,
+                                   const StretchFormula formula)
+  {
+    if (reduced >= 1)
       return 1;
-    if (formula == StretchFormula::quadratic_mean)
+    if (dim == 2 && formula == StretchFormula::quadratic_mean)
       // Perimeter 2 pi sqrt((a^2 + b^2) / 2) in (H22) (spec 4.11).
-      return std::sqrt((1 + std::sqrt(1 - chi * chi)) / chi);
-    // chi(gamma) = 4 pi (pi R^2) / P^2 with semi-axes R / gamma, gamma R
-    // decreases from 1 at gamma = 1: bisection.
-    const auto reduced = [](const double g) {
-      const double P = ellipse_perimeter(1 / g, g);
-      return 4 * M_PI * M_PI / (P * P);
-    };
+      return std::sqrt((1 + std::sqrt(1 - reduced * reduced)) / reduced);
+    // The reduced measure decreases from 1 at g = 1: bisection.
     double lo = 1, hi = 2;
-    while (reduced(hi) > chi)
+    while (reduced_measure<dim>(hi) > reduced)
       hi *= 2;
     for (unsigned int it = 0; it < 200 && hi - lo > 1e-15 * hi; ++it)
       {
-        const double mid               = 0.5 * (lo + hi);
-        (reduced(mid) > chi ? lo : hi) = mid;
+        const double mid                                = 0.5 * (lo + hi);
+        (reduced_measure<dim>(mid) > reduced ? lo : hi) = mid;
       }
     return 0.5 * (lo + hi);
   }
 
 
+  template <int dim>
   double
-  InitialVesicle::actual_reduced_area() const
+  InitialVesicle<dim>::actual_reduced_measure() const
   {
-    const double P = ellipse_perimeter(radius / gamma, radius * gamma);
-    return 4 * M_PI * M_PI * radius * radius / (P * P);
+    return reduced_measure<dim>(gamma);
   }
 
 
+  template <int dim>
   double
-  InitialVesicle::signed_distance(const Point<2> &x) const
+  InitialVesicle<dim>::major_semi_axis() const
   {
-    // Coordinates along the minor (x') and major (y') axes.
-    const Tensor<1, 2> r  = x - centre;
-    const double       xp = r[0] * std::sin(angle) - r[1] * std::cos(angle);
-    const double       yp = r[0] * std::cos(angle) + r[1] * std::sin(angle);
-    const double       rho
-      = std::sqrt(gamma * gamma * xp * xp + yp * yp / (gamma * gamma));
+    // Equal measure: (R / g) (g R) = R^2 in 2D, (R / g)^2 (g^2 R) = R^3.
+    return (dim == 2 ? gamma : gamma * gamma) * radius;
+  }
+
+
+  template <int dim>
+  double
+  InitialVesicle<dim>::minor_semi_axis() const
+  {
+    return radius / gamma;
+  }
+
+
+  template <int dim>
+  Tensor<1, dim>
+  InitialVesicle<dim>::major_axis() const
+  {
+    Tensor<1, dim> t;
+    t[0] = std::cos(angle);
+    t[1] = std::sin(angle);
+    return t;
+  }
+
+
+  template <int dim>
+  Tensor<1, dim>
+  InitialVesicle<dim>::minor_axis(const unsigned int k) const
+  {
+    Tensor<1, dim> t;
+    if (k == 0)
+      {
+        t[0] = std::sin(angle);
+        t[1] = -std::cos(angle);
+      }
+    else
+      t[2] = 1;
+    return t;
+  }
+
+
+  template <int dim>
+  double
+  InitialVesicle<dim>::signed_distance(const Point<dim> &x) const
+  {
+    // rho = R on the surface: with x' the coordinates along the axes,
+    // rho^2 = g^2 x'_minor^2 + x'_major^2 / g^2 (2D) and g^2 |x'_minor|^2 +
+    // x'_major^2 / g^4 (3D).
+    const Tensor<1, dim> r     = x - centre;
+    const double         major = r * major_axis();
+    double               rho;
+    if constexpr (dim == 2)
+      {
+        const double minor = r * minor_axis(0);
+        rho                = std::sqrt(gamma * gamma * minor * minor
+                        + major * major / (gamma * gamma));
+      }
+    else
+      {
+        double minor2 = 0;
+        for (unsigned int k = 0; k + 1 < dim; ++k)
+          minor2 += std::pow(r * minor_axis(k), 2);
+        rho = std::sqrt(gamma * gamma * minor2
+                        + major * major / std::pow(gamma, 4));
+      }
+    const double a = minor_semi_axis();
     if (rho == 0)
-      return -radius / gamma;
+      return -a;
     return r.norm() / rho * (rho - radius);
   }
 
 
+  template <int dim>
   double
-  InitialVesicle::phase_field(const Point<2> &x, const double eps) const
+  InitialVesicle<dim>::phase_field(const Point<dim> &x, const double eps) const
   {
     return std::tanh(-signed_distance(x) / (std::sqrt(2.) * eps));
   }
 
 
-  std::vector<Point<2>>
-  InitialVesicle::outline(const unsigned int n) const
+  template <int dim>
+  std::vector<Point<dim>>
+  InitialVesicle<dim>::outline(const unsigned int n) const
   {
-    std::vector<Point<2>> points;
-    const Tensor<1, 2>    minor({std::sin(angle), -std::cos(angle)});
-    const Tensor<1, 2>    major({std::cos(angle), std::sin(angle)});
-    for (unsigned int k = 0; k < n; ++k)
+    std::vector<Point<dim>> points;
+    const double            a = minor_semi_axis(), c = major_semi_axis();
+    if constexpr (dim == 2)
+      for (unsigned int k = 0; k < n; ++k)
+        {
+          const double t = 2 * M_PI * k / n;
+          points.push_back(centre + a * std::cos(t) * minor_axis(0)
+                           + c * std::sin(t) * major_axis());
+        }
+    else
       {
-        const double t = 2 * M_PI * k / n;
-        points.push_back(centre + radius / gamma * std::cos(t) * minor
-                         + radius * gamma * std::sin(t) * major);
+        // Latitudes from pole to pole along the major axis, each circle
+        // with as many points as keeps the spacing about even.
+        const unsigned int n_lat = std::max(3u, unsigned(std::sqrt(n / 2.)));
+        for (unsigned int i = 0; i <= n_lat; ++i)
+          {
+            const double       s = M_PI * i / n_lat;
+            const unsigned int n_lon
+              = std::max(1u, unsigned(2 * n_lat * std::sin(s) + 0.5));
+            for (unsigned int j = 0; j < n_lon; ++j)
+              {
+                const double t = 2 * M_PI * j / n_lon;
+                points.push_back(centre + c * std::cos(s) * major_axis()
+                                 + a * std::sin(s)
+                                     * (std::cos(t) * minor_axis(0)
+                                        + std::sin(t) * minor_axis(1)));
+              }
+          }
       }
     return points;
   }
+
+
+  template class InitialVesicle<2>;
+  template class InitialVesicle<3>;
 } // namespace vesicle_iga

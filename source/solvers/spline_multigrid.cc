@@ -231,10 +231,17 @@ namespace vesicle_iga
         for (unsigned int d = 0; d < dim; ++d)
           {
             const KnotVector &kv = f.knot_vectors[d];
-            c->knot_vectors[d]   = kv.n_elements() >= 4 ? kv.coarsened() : kv;
-            coarsened            = coarsened || kv.n_elements() >= 4;
-            c->n_basis[d]        = c->knot_vectors[d].n_basis();
-            P1[d]                = prolongation_matrix(c->knot_vectors[d], kv);
+            // A periodic direction keeps at least p + 1 basis functions
+            // (as many as elements) on the coarse level, which its knot
+            // vector needs (24 x 12 x 12 periodic in x, z: the third
+            // coarsening would leave 3 cubic elements in z).
+            const bool halve = kv.n_elements() >= 4
+                               && (!kv.is_periodic()
+                                   || kv.n_elements() >= 2 * (kv.degree() + 1));
+            c->knot_vectors[d] = halve ? kv.coarsened() : kv;
+            coarsened          = coarsened || halve;
+            c->n_basis[d]      = c->knot_vectors[d].n_basis();
+            P1[d]              = prolongation_matrix(c->knot_vectors[d], kv);
           }
         if (!coarsened)
           break;

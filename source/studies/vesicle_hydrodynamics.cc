@@ -34,6 +34,13 @@ namespace vesicle_iga
     const char        *section      = "Vesicle hydrodynamics";
     const unsigned int n_boundaries = 4;
 
+    /// The entry format of one vesicle in 'Vesicles'.
+    std::string
+    vesicle_format(const unsigned int dim)
+    {
+      return dim == 2 ? "'x, y, R_0, chi, angle'" : "'x, y, z, R_0, v, angle'";
+    }
+
 
     /// Per vesicle: area and volume errors (spec 4.12), centroid,
     /// inclination angle, global multipliers; then the kinetic, bending,
@@ -54,10 +61,12 @@ namespace vesicle_iga
                                          "volume_error_",
                                          "x_",
                                          "y_",
+                                         "z_",
                                          "theta_",
                                          "lambda_g_",
                                          "lambda_v_"})
-            c.push_back(name + std::to_string(i));
+            if (dim == 3 || name != "z_")
+              c.push_back(name + std::to_string(i));
         c.insert(c.end(),
                  {"kinetic_energy",
                   "bending_energy",
@@ -79,12 +88,11 @@ namespace vesicle_iga
               = (m.area - model.initial_areas()[i]) / model.initial_areas()[i];
             const double volume_error = (m.volume - model.initial_volumes()[i])
                                         / model.initial_volumes()[i];
+            row.insert(row.end(), {area_error, volume_error});
+            for (unsigned int d = 0; d < dim; ++d)
+              row.push_back(m.centroid[d]);
             row.insert(row.end(),
-                       {area_error,
-                        volume_error,
-                        m.centroid[0],
-                        m.centroid[1],
-                        m.angle,
+                       {m.angle,
                         model.area_multipliers()[i],
                         model.volume_multipliers()[i]});
             bending += m.bending_energy;
@@ -156,10 +164,12 @@ namespace vesicle_iga
 
 
     /// One vesicle of the 'Vesicles' list.
+    template <int dim>
     struct VesicleEntry
     {
-      Point<2> centre;
-      double   radius, reduced_area, angle;
+      Point<dim> centre;
+      /// R_0, the reduced area (2D) or volume (3D), the angle in degrees.
+      double radius, reduced, angle;
     };
 
 
@@ -175,20 +185,20 @@ namespace vesicle_iga
       void
       check_vesicles(const SplineSpace<dim> &space) const;
 
-      RunContext                    &context;
-      BoxSpaceParameters             box;
-      unsigned int                   degree;
-      int                            continuity;
-      MembraneCoefficients           membrane;
-      FlowBoundaryParameters         boundaries;
-      IncompressibleFlowParameters   flow_parameters;
-      PhaseFieldBlockParameters      phase_field_blocks;
-      TimeLoop::Parameters           loop_parameters;
-      std::vector<VesicleEntry>      vesicles;
-      InitialVesicle::StretchFormula stretch;
-      std::string                    initial_velocity;
-      bool                           write_vtu, write_tension;
-      double                         stabilisation_time_scale = 0;
+      RunContext                        &context;
+      BoxSpaceParameters                 box;
+      unsigned int                       degree;
+      int                                continuity;
+      MembraneCoefficients               membrane;
+      FlowBoundaryParameters             boundaries;
+      IncompressibleFlowParameters       flow_parameters;
+      PhaseFieldBlockParameters          phase_field_blocks;
+      TimeLoop::Parameters               loop_parameters;
+      std::vector<VesicleEntry<dim>>     vesicles;
+      InitialVesicleBase::StretchFormula stretch;
+      std::string                        initial_velocity;
+      bool                               write_vtu, write_tension;
+      double                             stabilisation_time_scale = 0;
     };
 
 
@@ -199,11 +209,6 @@ namespace vesicle_iga
       : context(context)
     {
       const std::string prefix = std::string(section) + "/";
-      check_input(dim == 2,
-                  "Dimension",
-                  std::to_string(dim),
-                  "2 (the Part H studies of spec 6.3 are 2D; 3D vesicles in "
-                  "a flow are not available yet)");
       prm.enter_subsection(section);
       box.parse(prm, dim);
       degree     = prm.get_integer("Degree");
@@ -235,8 +240,8 @@ namespace vesicle_iga
       flow_parameters.quadrature_points
         = quadrature > 0 ? quadrature : degree + 2;
       stretch                        = prm.get("Stretch formula") == "exact" ?
-                                         InitialVesicle::StretchFormula::exact :
-                                         InitialVesicle::StretchFormula::quadratic_mean;
+                                         InitialVesicleBase::StretchFormula::exact :
+                                         InitialVesicleBase::StretchFormula::quadratic_mean;
       initial_velocity               = prm.get("Initial velocity");
       write_vtu                      = prm.get_bool("Write VTU");
       write_tension                  = prm.get_bool("Write membrane samples");
@@ -291,24 +296,39 @@ namespace vesicle_iga
             {
               v.clear();
             }
-          check_input(v.size() == 5,
+          check_input(v.size() == dim + 3,
                       prefix + "Vesicles",
                       text,
-                      "'x, y, R_0, chi, angle' per vesicle (finite numbers; "
-                      "vesicles separated by ';')");
+                      vesicle_format(dim)
+                        + " per vesicle (finite numbers; vesicles separated "
+                          "by ';')");
           const std::string which
             = " (vesicle " + std::to_string(vesicles.size() + 1) + ")";
-          check_input(v[2] > 0, prefix + "Vesicles", text, "R_0 > 0" + which);
-          check_input(v[3] > 0 && v[3] <= 1,
+          check_input(v[dim] > 0, prefix + "Vesicles", text, "R_0 > 0" + which);
+          check_input(v[dim + 1] > 0 && v[dim + 1] <= 1,
                       prefix + "Vesicles",
                       text,
-                      "reduced area chi in (0, 1]" + which);
-          vesicles.push_back({Point<2>(v[0], v[1]), v[2], v[3], v[4]});
+                      std::string(dim == 2 ? "reduced area chi" :
+                                             "reduced volume v")
+                        + " in (0, 1]" + which);
+          VesicleEntry<dim> entry;
+          for (unsigned int d = 0; d < dim; ++d)
+            entry.centre[d] = v[d];
+          entry.radius  = v[dim];
+          entry.reduced = v[dim + 1];
+          entry.angle   = v[dim + 2];
+          vesicles.push_back(entry);
         }
       check_input(!vesicles.empty(),
                   prefix + "Vesicles",
                   vesicle_text,
-                  "at least one vesicle 'x, y, R_0, chi, angle'");
+                  "at least one vesicle " + vesicle_format(dim));
+      check_input(dim == 2
+                    || stretch == InitialVesicleBase::StretchFormula::exact,
+                  prefix + "Stretch formula",
+                  "quadratic-mean",
+                  "exact in 3D (the quadratic-mean perimeter of spec 4.11 "
+                  "is a 2D formula)");
       const SplineSpace<dim> space = box.make_space<dim>(degree, continuity);
       check_vesicles(space);
       bool level_fixed;
@@ -331,18 +351,17 @@ namespace vesicle_iga
     {
       const std::string prefix = std::string(section) + "/Vesicles";
       const double      eps    = membrane.epsilon;
-      std::vector<std::vector<Point<2>>> outlines;
-      std::vector<InitialVesicle>        shapes;
-      double lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};
+      std::vector<std::vector<Point<dim>>> outlines;
+      std::vector<InitialVesicle<dim>>     shapes;
+      double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
       for (unsigned int i = 0; i < vesicles.size(); ++i)
         {
           const auto &v = vesicles[i];
-          shapes.emplace_back(
-            v.centre, v.radius, v.reduced_area, v.angle, stretch);
-          outlines.push_back(shapes.back().outline(720));
+          shapes.emplace_back(v.centre, v.radius, v.reduced, v.angle, stretch);
+          outlines.push_back(shapes.back().outline(dim == 2 ? 720 : 2000));
           const std::string name = "vesicle " + std::to_string(i + 1);
           for (const auto &x : outlines.back())
-            for (unsigned int d = 0; d < 2; ++d)
+            for (unsigned int d = 0; d < dim; ++d)
               {
                 lo[d] = std::min(lo[d], x[d]);
                 hi[d] = std::max(hi[d], x[d]);
@@ -420,7 +439,7 @@ namespace vesicle_iga
             (loop_parameters.step.mode == "adaptive" ?
                loop_parameters.step.initial_dt :
                0.);
-      VesicleHydrodynamics<dim>   model(context.communicator,
+      VesicleHydrodynamics<dim>        model(context.communicator,
                                       space,
                                       membrane,
                                       coefficients,
@@ -429,14 +448,13 @@ namespace vesicle_iga
                                       vesicles.size(),
                                       timer,
                                       phase_field_blocks);
-      std::vector<InitialVesicle> shapes;
+      std::vector<InitialVesicle<dim>> shapes;
       std::vector<std::function<double(const Point<dim> &)>> phases;
       for (const auto &v : vesicles)
-        shapes.emplace_back(
-          v.centre, v.radius, v.reduced_area, v.angle, stretch);
+        shapes.emplace_back(v.centre, v.radius, v.reduced, v.angle, stretch);
       for (const auto &shape : shapes)
         phases.push_back([&shape, this](const Point<dim> &x) {
-          return shape.phase_field(Point<2>(x[0], x[1]), membrane.epsilon);
+          return shape.phase_field(x, membrane.epsilon);
         });
       {
         TimerOutput::Scope scope(timer, "setup");
@@ -465,7 +483,7 @@ namespace vesicle_iga
           writer.write(model.get_flow().solution(),
                        context.output_directory,
                        "vesicles-" + Utilities::int_to_string(step, 5));
-        if (write_tension)
+        if (write_tension && dim == 2)
           write_membrane_samples(model,
                                  space,
                                  context.output_directory + "/tension-"
@@ -484,12 +502,16 @@ namespace vesicle_iga
                     << ", Ca = " << membrane.capillary_number
                     << ", eps = " << membrane.epsilon
                     << ", beta_mu = " << membrane.viscosity_ratio << std::endl;
+      if (write_tension && dim == 3)
+        context.pcout << "Write membrane samples: tension-<step>.csv is "
+                         "written in 2D only; lambda_i and p are in the VTU"
+                      << std::endl;
       for (unsigned int i = 0; i < shapes.size(); ++i)
         context.pcout << "  vesicle " << i + 1 << ": centre "
                       << vesicles[i].centre << ", R_0 " << vesicles[i].radius
                       << ", gamma_e " << shapes[i].stretch()
-                      << ", reduced area " << shapes[i].actual_reduced_area()
-                      << std::endl;
+                      << (dim == 2 ? ", reduced area " : ", reduced volume ")
+                      << shapes[i].actual_reduced_measure() << std::endl;
       loop.run(model);
     }
   } // namespace
@@ -604,13 +626,16 @@ namespace vesicle_iga
           "Initial vesicles (H23), separated by ';': 'x, y, R_0, chi, "
           "angle' with centre (x, y), equal-area radius R_0, reduced area "
           "chi (H22) and the angle of the major axis to the x axis in "
-          "degrees (90: vertical, the spec's default).");
+          "degrees (90: vertical, the spec's default). In 3D 'x, y, z, R_0, "
+          "v, angle': a prolate spheroid of equal-volume radius R_0 and "
+          "reduced volume v = 6 sqrt(pi) V / A^(3/2), its long axis in the "
+          "x-y plane at the angle to the x axis.");
         prm.declare_entry("Stretch formula",
                           "exact",
                           Patterns::Selection("exact|quadratic-mean"),
                           "gamma_e of (H23) from chi: exact (the ellipse has "
                           "reduced area chi) or the source's quadratic-mean "
-                          "perimeter (spec 4.11).");
+                          "perimeter (spec 4.11; 2D only, 3D is exact).");
         prm.declare_entry("Initial velocity",
                           "0; 0",
                           Patterns::Anything(),
@@ -647,7 +672,9 @@ namespace vesicle_iga
                           Patterns::Bool(),
                           "tension-<step>.csv at the VTU interval: lambda_i "
                           "and p along the zero level set of every phi_i, "
-                          "with arc length (spec 4.12).");
+                          "with arc length (spec 4.12). 2D only (a 3D run "
+                          "says so and writes none; the VTU holds lambda_i "
+                          "and p).");
         FlowBoundaryParameters::declare(prm, n_boundaries);
         // The absolute tolerance sits above the round-off floor of the
         // residual: |R| stalls at 2e-10 for the 48k unknowns of HD2 at a
@@ -656,7 +683,13 @@ namespace vesicle_iga
         // after 20 corrections of noise and were retried with dt / 16,
         // which the dt-dependent relaxation of (H13) turned into a
         // disturbance; doc/hydrodynamics.md, "HD2 and HD5 to T = 1").
-        NewtonParameters::declare(prm, "20", "1e-8", "1e-9");
+        // A Jacobian serves two corrections and the next step's first: the
+        // Jacobian assembly is two thirds of a step, and the chord
+        // corrections converge as fast at dt = 1e-3 (HD4b's first 30 steps:
+        // 37 assemblies instead of 70, 125 s instead of 167 s, the state
+        // equal to the Newton tolerance; doc/hydrodynamics.md, "Jacobians
+        // kept across corrections and steps").
+        NewtonParameters::declare(prm, "20", "1e-8", "1e-9", "2", "true");
         prm.enter_subsection("Time stepping");
         TimeLoop::Parameters::declare(prm, {"fixed", "1e-3", "1e-3", "0.01"});
         GeneralizedAlphaParameters::declare(prm, "0.5");

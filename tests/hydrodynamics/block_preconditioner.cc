@@ -85,10 +85,10 @@ namespace
 
     VesicleHydrodynamics<2> model(
       MPI_COMM_WORLD, space, membrane, flow, walls, parameters, 3, timer);
-    const std::vector<InitialVesicle> vesicles{
-      InitialVesicle(Point<2>(0.5, 0.85), 0.25, 0.84, 90),
-      InitialVesicle(Point<2>(1.125, 0.75), 0.25, 0.84, 90),
-      InitialVesicle(Point<2>(1.75, 0.65), 0.25, 0.84, 90)};
+    const std::vector<InitialVesicle<2>> vesicles{
+      InitialVesicle<2>(Point<2>(0.5, 0.85), 0.25, 0.84, 90),
+      InitialVesicle<2>(Point<2>(1.125, 0.75), 0.25, 0.84, 90),
+      InitialVesicle<2>(Point<2>(1.75, 0.65), 0.25, 0.84, 90)};
     std::vector<std::function<double(const Point<2> &)>> phases;
     for (const auto &v : vesicles)
       phases.push_back(
@@ -137,7 +137,7 @@ namespace
   asymmetry(const Outcome &o)
   {
     const auto &m = o.measures;
-    return std::max({m[1].centroid.distance(Point<2>(1.125, 0.75)),
+    return std::max({m[1].centroid.distance(Point<3>(1.125, 0.75, 0)),
                      std::abs(m[0].centroid[0] + m[2].centroid[0] - 2.25),
                      std::abs(m[0].centroid[1] + m[2].centroid[1] - 1.5),
                      std::abs(m[0].angle - m[2].angle),

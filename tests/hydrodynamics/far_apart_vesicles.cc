@@ -114,11 +114,9 @@ namespace
     std::vector<std::function<double(const Point<2> &)>> phases;
     for (unsigned int i = 0; i < copies; ++i)
       phases.push_back([i, length](const Point<2> &x) {
-        const InitialVesicle vesicle(Point<2>((i + 0.5) * period, height / 2),
-                                     0.5,
-                                     0.84,
-                                     90);
-        double               phi = -1;
+        const InitialVesicle<2> vesicle(
+          Point<2>((i + 0.5) * period, height / 2), 0.5, 0.84, 90);
+        double phi = -1;
         for (const double shift : {-length, 0., length})
           phi += 1 + vesicle.phase_field(Point<2>(x[0] - shift, x[1]), eps);
         return phi;

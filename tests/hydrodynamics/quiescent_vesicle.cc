@@ -66,7 +66,7 @@ main(int argc, char *argv[])
 
   VesicleHydrodynamics<2> model(
     MPI_COMM_WORLD, space, membrane, flow, walls, parameters, 1, timer);
-  const InitialVesicle vesicle(Point<2>(1, 1), 0.5, 0.84, 90);
+  const InitialVesicle<2> vesicle(Point<2>(1, 1), 0.5, 0.84, 90);
   model.set_initial_state(Functions::ZeroFunction<2>(2),
                           {[&](const Point<2> &x) {
                             return vesicle.phase_field(x, 0.125);
@@ -92,7 +92,8 @@ main(int argc, char *argv[])
       const double e = energy();
       worst_rise     = std::max(worst_rise, (e - previous) / previous);
       previous       = e;
-      worst_centroid = std::max(worst_centroid, m.centroid.distance({1, 1}));
+      worst_centroid
+        = std::max(worst_centroid, m.centroid.distance(Point<3>(1, 1, 0)));
       worst_angle
         = std::max(worst_angle, std::abs(std::abs(m.angle) - M_PI / 2));
     }

@@ -69,7 +69,7 @@ namespace
     parameters.newton.absolute_tolerance = 1e-12;
     VesicleHydrodynamics<2> model(
       MPI_COMM_WORLD, space, membrane, flow, walls, parameters, 1, timer);
-    const InitialVesicle vesicle(Point<2>(1, 1), 0.5, 0.84, 90);
+    const InitialVesicle<2> vesicle(Point<2>(1, 1), 0.5, 0.84, 90);
     model.set_initial_state(
       Functions::ConstantFunction<2>(std::vector<double>{U, 0.}),
       {[&](const Point<2> &x) { return vesicle.phase_field(x, 0.125); }});

@@ -89,7 +89,7 @@ namespace vesicle_iga
       1,
       timer,
       phase_field_blocks);
-    const InitialVesicle vesicle(dealii::Point<2>(0., 0.), 0.45, 0.84, 90);
+    const InitialVesicle<2> vesicle(dealii::Point<2>(0., 0.), 0.45, 0.84, 90);
     model.set_initial_state(dealii::Functions::ZeroFunction<2>(2),
                             {[&vesicle](const dealii::Point<2> &x) {
                               return vesicle.phase_field(x, 0.125);

@@ -23,9 +23,10 @@ namespace vesicle_iga
   {
     /// A_i and V_i of (H12c).
     double area = 0, volume = 0;
-    /// Centroid and inclination angle theta_i (radians) of the indicator
-    /// (1 + phi_i) / 2 (spec 4.12).
-    dealii::Point<2> centroid;
+    /// Centroid (z = 0 in 2D) and inclination angle theta_i (radians) of
+    /// the indicator (1 + phi_i) / 2 (spec 4.12); in 3D the angle of the
+    /// major principal axis of the x-y second moments (the shear plane).
+    dealii::Point<3> centroid;
     double           angle = 0;
     /// (1 / (2 eps Re Ca)) int f_i^2.
     double bending_energy = 0;
@@ -36,8 +37,8 @@ namespace vesicle_iga
   /// > 0 in a periodic direction (0 otherwise) and the lower end.
   struct PeriodicBox
   {
-    double period[2] = {0, 0};
-    double lower[2]  = {0, 0};
+    double period[3] = {0, 0, 0};
+    double lower[3]  = {0, 0, 0};
   };
 
 
@@ -201,7 +202,7 @@ namespace vesicle_iga
     /// @p references (A_i and V_i first), then, if asked for, per vesicle
     /// its bending energy (the costly part: Hessians).
     std::vector<double>
-    integrate_geometry(const std::vector<dealii::Point<2>> &references,
+    integrate_geometry(const std::vector<dealii::Point<dim>> &references,
                        const bool with_bending_energy) const;
 
     const MembraneCoefficients                             membrane;
