@@ -177,6 +177,21 @@ namespace vesicle_iga
   }
 
 
+  namespace
+  {
+    /// Whether a level's knot vector is halved for the next coarser one: at
+    /// least 4 elements, and a periodic direction keeps at least p + 1
+    /// basis functions (as many as elements), which its knot vector needs
+    /// (24 x 12 x 12 periodic in x, z: the third coarsening would leave 3
+    /// cubic elements in z).
+    bool
+    can_be_halved(const KnotVector &kv)
+    {
+      return kv.n_elements() >= 4
+             && (!kv.is_periodic() || kv.n_elements() >= 2 * (kv.degree() + 1));
+    }
+  } // namespace
+
   template <int dim>
   void
   SplineMultigrid<dim>::setup(
@@ -230,18 +245,12 @@ namespace vesicle_iga
         std::array<std::vector<std::vector<double>>, dim> P1;
         for (unsigned int d = 0; d < dim; ++d)
           {
-            const KnotVector &kv = f.knot_vectors[d];
-            // A periodic direction keeps at least p + 1 basis functions
-            // (as many as elements) on the coarse level, which its knot
-            // vector needs (24 x 12 x 12 periodic in x, z: the third
-            // coarsening would leave 3 cubic elements in z).
-            const bool halve = kv.n_elements() >= 4
-                               && (!kv.is_periodic()
-                                   || kv.n_elements() >= 2 * (kv.degree() + 1));
-            c->knot_vectors[d] = halve ? kv.coarsened() : kv;
-            coarsened          = coarsened || halve;
-            c->n_basis[d]      = c->knot_vectors[d].n_basis();
-            P1[d]              = prolongation_matrix(c->knot_vectors[d], kv);
+            const KnotVector &kv    = f.knot_vectors[d];
+            const bool        halve = can_be_halved(kv);
+            c->knot_vectors[d]      = halve ? kv.coarsened() : kv;
+            coarsened               = coarsened || halve;
+            c->n_basis[d]           = c->knot_vectors[d].n_basis();
+            P1[d] = prolongation_matrix(c->knot_vectors[d], kv);
           }
         if (!coarsened)
           break;
