@@ -85,51 +85,56 @@ namespace vesicle_iga
 
 
   void
-  BoxSpaceParameters::parse(ParameterHandler &prm, const unsigned int dim)
+  BoxSpaceParameters::parse(ParameterHandler  &prm,
+                            const unsigned int dim,
+                            const std::string &section)
   {
+    // The full path, as in the messages of the study's own entries.
+    message_path     = section + "/Mesh/";
+    const auto &mesh = message_path;
     prm.enter_subsection("Mesh");
     lower = per_direction(parse_double_list(prm.get("Lower corner"),
-                                            "Mesh/Lower corner"),
+                                            mesh + "Lower corner"),
                           dim,
-                          "Mesh/Lower corner",
+                          mesh + "Lower corner",
                           prm.get("Lower corner"));
     upper = per_direction(parse_double_list(prm.get("Upper corner"),
-                                            "Mesh/Upper corner"),
+                                            mesh + "Upper corner"),
                           dim,
-                          "Mesh/Upper corner",
+                          mesh + "Upper corner",
                           prm.get("Upper corner"));
     std::vector<unsigned int> n;
     for (const double x :
-         parse_double_list(prm.get("Elements"), "Mesh/Elements"))
+         parse_double_list(prm.get("Elements"), mesh + "Elements"))
       {
         check_input(x >= 1 && x == std::floor(x) && x <= 1e6,
-                    "Mesh/Elements",
+                    mesh + "Elements",
                     prm.get("Elements"),
                     "positive integers up to 10^6 per direction");
         n.push_back(static_cast<unsigned int>(x));
       }
-    elements     = per_direction(n, dim, "Mesh/Elements", prm.get("Elements"));
+    elements = per_direction(n, dim, mesh + "Elements", prm.get("Elements"));
     double total = 1;
     for (const unsigned int e : elements)
       total *= e;
     check_input(total <= 1e9,
-                "Mesh/Elements",
+                mesh + "Elements",
                 prm.get("Elements"),
                 "at most 10^9 elements in all (the element and basis "
                 "numbering is 32-bit)");
     grading
-      = per_direction(parse_double_list(prm.get("Grading"), "Mesh/Grading"),
+      = per_direction(parse_double_list(prm.get("Grading"), mesh + "Grading"),
                       dim,
-                      "Mesh/Grading",
+                      mesh + "Grading",
                       prm.get("Grading"));
     for (unsigned int d = 0; d < dim; ++d)
       {
         check_input(upper[d] > lower[d],
-                    "Mesh/Upper corner",
+                    mesh + "Upper corner",
                     prm.get("Upper corner"),
                     "each coordinate larger than that of 'Lower corner'");
         check_input(grading[d] > 0,
-                    "Mesh/Grading",
+                    mesh + "Grading",
                     prm.get("Grading"),
                     "positive ratios");
       }
@@ -139,32 +144,34 @@ namespace vesicle_iga
     core_upper.clear();
     check_input(Utilities::trim(core_lower_text).empty()
                   == Utilities::trim(core_upper_text).empty(),
-                "Mesh/Core upper corner",
+                mesh + "Core upper corner",
                 core_upper_text,
                 "given together with 'Core lower corner' (or both empty)");
     if (!Utilities::trim(core_lower_text).empty())
       {
-        core_lower = per_direction(parse_double_list(core_lower_text,
-                                                     "Mesh/Core lower corner"),
-                                   dim,
-                                   "Mesh/Core lower corner",
-                                   core_lower_text);
-        core_upper = per_direction(parse_double_list(core_upper_text,
-                                                     "Mesh/Core upper corner"),
-                                   dim,
-                                   "Mesh/Core upper corner",
-                                   core_upper_text);
+        core_lower
+          = per_direction(parse_double_list(core_lower_text,
+                                            mesh + "Core lower corner"),
+                          dim,
+                          mesh + "Core lower corner",
+                          core_lower_text);
+        core_upper
+          = per_direction(parse_double_list(core_upper_text,
+                                            mesh + "Core upper corner"),
+                          dim,
+                          mesh + "Core upper corner",
+                          core_upper_text);
         for (unsigned int d = 0; d < dim; ++d)
           {
             check_input(lower[d] <= core_lower[d]
                           && core_lower[d] < core_upper[d]
                           && core_upper[d] <= upper[d],
-                        "Mesh/Core upper corner",
+                        mesh + "Core upper corner",
                         core_upper_text,
                         "a core box inside the domain: lower corner <= core "
                         "lower corner < core upper corner <= upper corner");
             check_input(grading[d] >= 1,
-                        "Mesh/Grading",
+                        mesh + "Grading",
                         prm.get("Grading"),
                         "ratios >= 1 with a core box (elements grow "
                         "towards the faces)");
@@ -175,14 +182,14 @@ namespace vesicle_iga
       {
         const std::string name = std::string("Breakpoints ") + "xyz"[d];
         if (!Utilities::trim(prm.get(name)).empty())
-          breakpoints[d] = parse_double_list(prm.get(name), "Mesh/" + name);
+          breakpoints[d] = parse_double_list(prm.get(name), mesh + name);
       }
     periodic.assign(dim, false);
     for (const auto &d :
          Utilities::split_string_list(prm.get("Periodic directions"), ','))
       {
         check_input(d.size() == 1 && d[0] >= 'x' && d[0] < char('x' + dim),
-                    "Mesh/Periodic directions",
+                    mesh + "Periodic directions",
                     prm.get("Periodic directions"),
                     "a comma-separated list of x, y, z (up to the dimension)");
         periodic[d[0] - 'x'] = true;
@@ -251,7 +258,7 @@ namespace vesicle_iga
             z.back() = upper[d];
           }
         check_input(z.size() >= 2,
-                    std::string("Mesh/Breakpoints ") + "xyz"[d],
+                    message_path + "Breakpoints " + "xyz"[d],
                     std::to_string(z.size()) + " value(s)",
                     "at least two increasing breakpoints (one element)");
         const int k = continuity < 0 ? int(degree) - 1 : continuity;

@@ -53,7 +53,7 @@ namespace vesicle_iga
       : context(context)
     {
       prm.enter_subsection(section);
-      box.parse(prm, dim);
+      box.parse(prm, dim, section);
       convergence.parse(prm, 1);
       solver.parse(prm);
       boundary_condition = prm.get("Boundary condition");

@@ -168,7 +168,7 @@ namespace vesicle_iga
     {
       const std::string prefix = std::string(section) + "/";
       prm.enter_subsection(section);
-      box.parse(prm, dim);
+      box.parse(prm, dim, section);
       convergence.parse(prm, 0);
       flow_parameters.solver.parse_flow(prm);
       flow_parameters.newton.parse(prm);

@@ -52,7 +52,7 @@ namespace vesicle_iga
       : context(context)
     {
       prm.enter_subsection(section);
-      box.parse(prm, dim);
+      box.parse(prm, dim, section);
       convergence.parse(prm, 0);
       solver.parse(prm);
       strong_text      = prm.get("Strong Dirichlet boundaries");

@@ -210,7 +210,7 @@ namespace vesicle_iga
     {
       const std::string prefix = std::string(section) + "/";
       prm.enter_subsection(section);
-      box.parse(prm, dim);
+      box.parse(prm, dim, section);
       degree     = prm.get_integer("Degree");
       continuity = prm.get_integer("Continuity");
       flow_parameters.solver.parse_flow(prm);

@@ -400,7 +400,7 @@ namespace vesicle_iga
     {
       auto &p = model_parameters;
       prm.enter_subsection(section);
-      box.parse(prm, dim);
+      box.parse(prm, dim, section);
       degree                  = prm.get_integer("Degree");
       continuity              = prm.get_integer("Continuity");
       p.quadrature_points     = prm.get_integer("Quadrature points");

@@ -78,8 +78,24 @@ main(int argc, char *argv[])
         "set Study = navier-stokes\nsubsection Navier-Stokes\n"
         "subsection Boundary 1\nset Type = strong\n"
         "set Where = y-min{x:0:inf}\nend\nend\n"},
-       {"vesicles in 3D",
+       {"3D vesicles in a 2D box",
         "set Study = vesicle-hydrodynamics\nset Dimension = 3\n"},
+       {"3D vesicles given in the 2D format",
+        "set Study = vesicle-hydrodynamics\nset Dimension = 3\n"
+        "subsection Vesicle hydrodynamics\nsubsection Mesh\n"
+        "set Lower corner = -2\nset Upper corner = 2\nset Elements = 8\n"
+        "end\nset Vesicles = 0, 0, 0.863, 0.84, 90\nend\n"},
+       {"reduced volume above 1",
+        "set Study = vesicle-hydrodynamics\nset Dimension = 3\n"
+        "subsection Vesicle hydrodynamics\nsubsection Mesh\n"
+        "set Lower corner = -2\nset Upper corner = 2\nset Elements = 8\n"
+        "end\nset Vesicles = 0, 0, 0, 0.863, 1.1, 90\nend\n"},
+       {"2D perimeter formula in 3D",
+        "set Study = vesicle-hydrodynamics\nset Dimension = 3\n"
+        "subsection Vesicle hydrodynamics\nsubsection Mesh\n"
+        "set Lower corner = -2\nset Upper corner = 2\nset Elements = 8\n"
+        "end\nset Vesicles = 0, 0, 0, 0.863, 0.9, 90\n"
+        "set Stretch formula = quadratic-mean\nend\n"},
        {"vesicles on quadratic splines",
         "set Study = vesicle-hydrodynamics\n"
         "subsection Vesicle hydrodynamics\nset Degree = 2\nend\n"},

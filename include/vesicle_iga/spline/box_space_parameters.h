@@ -26,15 +26,21 @@ namespace vesicle_iga
     /// Refined core box (empty: none).
     std::vector<double> core_lower, core_upper;
     std::vector<bool>   periodic;
+    /// "<study section>/Mesh/": the prefix of the entries in messages.
+    std::string message_path = "Mesh/";
 
     static void
     declare(dealii::ParameterHandler &prm,
             const std::string        &default_lower,
             const std::string        &default_upper,
             const std::string        &default_elements);
-    /// Reads and checks the entries (InputError naming the parameter).
+    /// Reads and checks the entries of the subsection "Mesh" of the current
+    /// subsection, named @p section in the messages (InputError naming the
+    /// parameter by its full path).
     void
-    parse(dealii::ParameterHandler &prm, const unsigned int dim);
+    parse(dealii::ParameterHandler &prm,
+          const unsigned int        dim,
+          const std::string        &section);
 
     template <int dim>
     SplineSpace<dim>
