@@ -15,6 +15,7 @@
 #include <vesicle_iga/io/spline_output.h>
 #include <vesicle_iga/models/vesicle_hydrodynamics.h>
 #include <vesicle_iga/physics/initial_vesicle.h>
+#include <vesicle_iga/postprocess/spline_section.h>
 #include <vesicle_iga/postprocess/zero_contour.h>
 #include <vesicle_iga/spline/box_space_parameters.h>
 #include <vesicle_iga/studies/flow_study_parts.h>
@@ -120,8 +121,12 @@ namespace vesicle_iga
      * lambda_i and p sampled on the zero level set of phi_i, with the arc
      * length s from the rightmost point, counter-clockwise. One CSV with the
      * columns vesicle, piece (0 = the longest piece of the level set; a
-     * vesicle pinching off has more), s, x, y, lambda, p. A collective call;
-     * rank 0 writes.
+     * vesicle pinching off has more), s, x, y, lambda, p. In 3D the samples
+     * lie on the section of the membrane by the plane z = z_i through the
+     * vesicle's centroid (the shear plane of the study files; the column z
+     * follows y): the section of the spline field is itself a 2D spline
+     * (section_at_z()), so the points lie on the 3D zero set. A collective
+     * call; rank 0 writes.
      */
     template <int dim>
     void
@@ -132,34 +137,45 @@ namespace vesicle_iga
       const auto &dofs = model.get_flow().dofs();
       const auto  natural
         = gather_natural_on_rank_0(dofs, model.get_flow().solution());
+      // Collective: every rank measures.
+      const std::vector<VesicleMeasures> measures
+        = dim == 3 ? model.measure() : std::vector<VesicleMeasures>();
       if (Utilities::MPI::this_mpi_process(dofs.get_mesh().get_communicator())
           != 0)
         return;
-      if constexpr (dim == 2)
+      const unsigned int nc = dofs.n_components();
+      std::ofstream      out(filename);
+      out << (dim == 2 ? "vesicle,piece,s,x,y,lambda,p\n" :
+                         "vesicle,piece,s,x,y,z,lambda,p\n")
+          << std::setprecision(10);
+      for (unsigned int i = 0; i < model.n_vesicles(); ++i)
         {
-          const unsigned int n  = model.n_vesicles();
-          const unsigned int nc = dofs.n_components();
-          std::ofstream      out(filename);
-          out << "vesicle,piece,s,x,y,lambda,p\n" << std::setprecision(10);
-          for (unsigned int i = 0; i < n; ++i)
+          std::vector<ZeroContour> contours;
+          double                   z = 0;
+          if constexpr (dim == 2)
+            contours = zero_contours(space, natural, nc, model.phase(i));
+          else
             {
-              const auto contours
-                = zero_contours(space, natural, nc, model.phase(i));
-              for (unsigned int k = 0; k < contours.size(); ++k)
-                for (unsigned int j = 0; j < contours[k].points.size(); ++j)
-                  {
-                    const auto &v = contours[k].values[j];
-                    out << i + 1 << ',' << k << ',' << contours[k].arc_length[j]
-                        << ',' << contours[k].points[j][0] << ','
-                        << contours[k].points[j][1] << ','
-                        << v[model.tension(i)] << ',' << v[model.pressure]
-                        << '\n';
-                  }
+              z                  = measures[i].centroid[2];
+              const auto section = section_at_z(space, natural, nc, z);
+              contours           = zero_contours(section.space,
+                                       section.natural,
+                                       nc,
+                                       model.phase(i));
             }
-          check_written(out, filename);
+          for (unsigned int k = 0; k < contours.size(); ++k)
+            for (unsigned int j = 0; j < contours[k].points.size(); ++j)
+              {
+                const auto &v = contours[k].values[j];
+                out << i + 1 << ',' << k << ',' << contours[k].arc_length[j]
+                    << ',' << contours[k].points[j][0] << ','
+                    << contours[k].points[j][1] << ',';
+                if (dim == 3)
+                  out << z << ',';
+                out << v[model.tension(i)] << ',' << v[model.pressure] << '\n';
+              }
         }
-      else
-        (void)space, (void)filename;
+      check_written(out, filename);
     }
 
 
@@ -483,7 +499,7 @@ namespace vesicle_iga
           writer.write(model.get_flow().solution(),
                        context.output_directory,
                        "vesicles-" + Utilities::int_to_string(step, 5));
-        if (write_tension && dim == 2)
+        if (write_tension)
           write_membrane_samples(model,
                                  space,
                                  context.output_directory + "/tension-"
@@ -502,10 +518,6 @@ namespace vesicle_iga
                     << ", Ca = " << membrane.capillary_number
                     << ", eps = " << membrane.epsilon
                     << ", beta_mu = " << membrane.viscosity_ratio << std::endl;
-      if (write_tension && dim == 3)
-        context.pcout << "Write membrane samples: tension-<step>.csv is "
-                         "written in 2D only; lambda_i and p are in the VTU"
-                      << std::endl;
       for (unsigned int i = 0; i < shapes.size(); ++i)
         context.pcout << "  vesicle " << i + 1 << ": centre "
                       << vesicles[i].centre << ", R_0 " << vesicles[i].radius
@@ -672,9 +684,9 @@ namespace vesicle_iga
                           Patterns::Bool(),
                           "tension-<step>.csv at the VTU interval: lambda_i "
                           "and p along the zero level set of every phi_i, "
-                          "with arc length (spec 4.12). 2D only (a 3D run "
-                          "says so and writes none; the VTU holds lambda_i "
-                          "and p).");
+                          "with arc length (spec 4.12); in 3D along the "
+                          "section of the membrane by the plane z = z_i "
+                          "through the vesicle's centroid (column z).");
         FlowBoundaryParameters::declare(prm, n_boundaries);
         // The absolute tolerance sits above the round-off floor of the
         // residual: |R| stalls at 2e-10 for the 48k unknowns of HD2 at a
