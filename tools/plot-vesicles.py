@@ -106,7 +106,10 @@ for i in range(1, n + 1):
     ax[0, 0].plot([float(r[f"x_{i}"]) for r in series],
                   [float(r[f"y_{i}"]) for r in series], "--", color="grey", lw=0.8)
 ax[0, 0].set_aspect("equal")
-ax[0, 0].set_title("zero level sets and centroid paths")
+# A 3D run samples the section of each membrane by the plane z = z_i.
+three_d = bool(series) and "z_1" in series[0]
+ax[0, 0].set_title("zero level sets and centroid paths"
+                   + (" (sections z = z_i)" if three_d else ""))
 ax[0, 0].legend(fontsize=8)
 
 last = read_samples(samples[steps[-1]])
