@@ -17,7 +17,10 @@
 //    component (the interpolant of g = x + 2y + sin(pi z), standing for
 //    lambda_i or p) reported with the point equals the 3D spline there to
 //    1e-12;
-//  - a section through the seam (z_0 = 0) misses the sphere: no piece.
+//  - a section through the seam (z_0 = 0) misses the sphere: no piece;
+//  - the periodic direction has no ends: z_0 + 2 (one period) gives the
+//    coefficients of the section at z_0 to 1e-13 (z_0 + 2 - 2 is not z_0
+//    to the last bit in binary).
 
 #include <vesicle_iga/postprocess/spline_section.h>
 #include <vesicle_iga/postprocess/zero_contour.h>
@@ -28,6 +31,18 @@
 
 using namespace vesicle_iga;
 using namespace dealii;
+
+namespace
+{
+  double
+  max_difference(const std::vector<double> &a, const std::vector<double> &b)
+  {
+    double worst = a.size() == b.size() ? 0. : 1e300;
+    for (std::size_t i = 0; i < std::min(a.size(), b.size()); ++i)
+      worst = std::max(worst, std::abs(a[i] - b[i]));
+    return worst;
+  }
+} // namespace
 
 int
 main()
@@ -72,7 +87,8 @@ main()
     = std::abs(contours[0].length() / (2 * M_PI * r) - 1);
   const double area_error
     = std::abs(contours[0].enclosed_area() / (M_PI * r * r) - 1);
-  const auto at_seam = section_at_z(space, natural, nc, 0.);
+  const auto at_seam    = section_at_z(space, natural, nc, 0.);
+  const auto one_period = section_at_z(space, natural, nc, z0 + 2.);
 
   out << "section z = 1.2: one closed piece: "
       << verdict(contours.size() == 1 && contours[0].closed)
@@ -88,8 +104,11 @@ main()
       << "\nthe values at the points are the 3D spline's (to 1e-12): "
       << verdict(worst_g < 1e-12) << "\nsection z = 0 (the seam): no piece: "
       << verdict(zero_contours(at_seam.space, at_seam.natural, nc, 0).empty())
+      << "\nsection z = 3.2, one period on: the same coefficients: "
+      << verdict(max_difference(one_period.natural, section.natural) < 1e-13)
       << '\n';
   std::cout << "radius error " << worst_radius << ", |phi| " << worst_phi
             << ", g error " << worst_g << ", length error " << length_error
-            << ", area error " << area_error << std::endl;
+            << ", area error " << area_error << ", one period "
+            << max_difference(one_period.natural, section.natural) << std::endl;
 }
