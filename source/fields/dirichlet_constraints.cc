@@ -336,6 +336,52 @@ namespace vesicle_iga
       }
   }
 
+
+  template <int dim>
+  void
+  add_zero_normal_derivative_constraints(
+    const SplineDofHandler<dim> &dof_handler,
+    const std::vector<bool>     &components,
+    AffineConstraints<double>   &constraints)
+  {
+    AssertDimension(components.size(), dof_handler.n_components());
+    const IndexSet &relevant = dof_handler.locally_relevant_dofs();
+    for (unsigned int k = 0; k < components.size(); ++k)
+      {
+        if (!components[k])
+          continue;
+        const SplineSpace<dim> &space = dof_handler.component_space(k);
+        for (unsigned int d = 0; d < dim; ++d)
+          AssertThrow(space.knot_vector(d).is_periodic()
+                        || space.knot_vector(d).n_basis() >= 3,
+                      ExcMessage("du/dn = 0 needs 3 or more basis functions "
+                                 "in every non-periodic direction."));
+        for (unsigned int b = 0; b < space.n_basis(); ++b)
+          {
+            const auto m   = space.basis_multi_index(b);
+            auto       rep = m;
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                const KnotVector &kv = space.knot_vector(d);
+                if (kv.is_periodic())
+                  continue;
+                if (m[d] == 0)
+                  rep[d] = 1;
+                else if (m[d] == kv.n_basis() - 1)
+                  rep[d] = kv.n_basis() - 2;
+              }
+            if (rep == m)
+              continue;
+            const auto dof = dof_handler.dof_index(b, k);
+            if (!relevant.is_element(dof) || constraints.is_constrained(dof))
+              continue;
+            constraints.add_line(dof);
+            constraints.add_entry(
+              dof, dof_handler.dof_index(space.basis_index(rep), k), 1.);
+          }
+      }
+  }
+
 #define INSTANTIATE(dim)                                                       \
   template void add_strong_dirichlet_constraints(                              \
     const SplineDofHandler<dim> &,                                             \
@@ -349,6 +395,10 @@ namespace vesicle_iga
     const BoundarySelection<dim> &,                                            \
     const Function<dim> &,                                                     \
     const std::function<double(const Point<dim> &, const Tensor<1, dim> &)> &, \
+    AffineConstraints<double> &);                                              \
+  template void add_zero_normal_derivative_constraints(                        \
+    const SplineDofHandler<dim> &,                                             \
+    const std::vector<bool> &,                                                 \
     AffineConstraints<double> &);
   INSTANTIATE(2)
   INSTANTIATE(3)

@@ -162,8 +162,14 @@ namespace vesicle_iga
     boundary_values(0., values);
     values.close();
     increments.reinit(dof_handler.locally_relevant_dofs());
+    // The homogeneous version: Dirichlet lines fix their increment to zero,
+    // lines that tie a coefficient to others (du/dn = 0 of the phase
+    // fields) tie the increments the same way.
     for (const auto &line : values.get_lines())
-      increments.add_line(line.index);
+      {
+        increments.add_line(line.index);
+        increments.add_entries(line.index, line.entries);
+      }
     increments.close();
 
     TrilinosWrappers::SparsityPattern sparsity;

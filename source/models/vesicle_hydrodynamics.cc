@@ -453,8 +453,10 @@ namespace vesicle_iga
     if (phase_field_blocks.preconditioner == "spline-multigrid")
       for (unsigned int i = 0; i < n; ++i)
         {
-          // Row of basis b in the phase-field block: new_index(b); the
-          // phase fields have natural conditions only.
+          // Row of basis b in the phase-field block: new_index(b). The
+          // rows tied by d phi_i / dn = 0 hold only their diagonal in the
+          // assembled block (their couplings went to the coefficient they
+          // are tied to), so the levels keep them as decoupled unknowns.
           IndexSet owned(dofs.get_space().n_basis());
           for (const auto g : dofs.locally_owned_dofs())
             if (g % nc == phase(i))
@@ -538,6 +540,15 @@ namespace vesicle_iga
                                             dofs.n_components()),
                                           mask,
                                           c);
+    // d phi_i / dn = 0 on the same boundary (spec 4.10, the source's pair
+    // with the natural d f_i / dn = 0 that (H24) leaves).
+    if (membrane.zero_normal_derivative)
+      {
+        std::vector<bool> phases(dofs.n_components(), false);
+        for (unsigned int i = 0; i < n; ++i)
+          phases[phase(i)] = true;
+        add_zero_normal_derivative_constraints<dim>(dofs, phases, c);
+      }
   }
 
 

@@ -244,6 +244,8 @@ namespace vesicle_iga
         = prm.get("Volume multiplier") == "membrane";
       membrane.extrapolated_multipliers
         = prm.get("Global multipliers") == "extrapolated";
+      membrane.zero_normal_derivative
+        = prm.get("Phase field boundary condition") == "zero normal derivative";
       membrane.mobility           = prm.get_double("Mobility");
       membrane.inextensibility_xi = prm.get_double("Inextensibility xi");
       membrane.viscosity_ratio    = prm.get_double("Viscosity ratio");
@@ -614,6 +616,19 @@ namespace vesicle_iga
           "area inside its zero level sets in 30 steps with 'domain', while "
           "V_i is held to 1e-3 (doc/hydrodynamics.md, \"Volume "
           "multiplier\").");
+        prm.declare_entry(
+          "Phase field boundary condition",
+          "zero normal derivative",
+          Patterns::Selection("zero normal derivative|natural"),
+          "Condition of phi_i on the non-periodic sides. zero normal "
+          "derivative: d phi_i / dn = 0 strongly, with d f_i / dn = 0 "
+          "natural, the pair of the source (spec 4.10). natural: no "
+          "condition on phi_i; the primal form (H24) then leaves f_i = d f_i "
+          "/ dn = 0, under which phase-field boundary layers cost no bending "
+          "energy and grow without bound while lambda_g < 0: "
+          "prm/hd4a-doublet-shear.prm at 32 per unit fails at t = 0.015 from "
+          "the corners of its open sides (doc/hydrodynamics.md, \"Phase-field "
+          "boundary condition\"). Kept to reproduce runs made with it.");
         prm.declare_entry("Mobility",
                           "0.1",
                           Patterns::Double(),

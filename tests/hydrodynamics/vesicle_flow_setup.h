@@ -73,12 +73,14 @@ namespace vesicle_iga
                        const double                        dt,
                        dealii::TimerOutput                &timer,
                        const PhaseFieldBlockParameters    &phase_field_blocks
-                       = PhaseFieldBlockParameters())
+                       = PhaseFieldBlockParameters(),
+                       const bool zero_normal_derivative = true)
   {
     const SplineSpace<2> space(cubic_box_knots(2 * per_unit, -1., 1.));
     MembraneCoefficients membrane;
-    membrane.epsilon               = 0.125;
-    const FlowCoefficients<2> flow = cubic_flow_coefficients(membrane);
+    membrane.epsilon                = 0.125;
+    membrane.zero_normal_derivative = zero_normal_derivative;
+    const FlowCoefficients<2> flow  = cubic_flow_coefficients(membrane);
     VesicleHydrodynamics<2>   model(
       MPI_COMM_WORLD,
       space,

@@ -8,7 +8,9 @@
 # tools/build.sh):
 #   tools/bench/run-vesicle-solver.sh [elements per unit length...]  (default 8 16 32)
 # Environment: METHOD (fgmres-block or direct), RANKS (default "1 2"),
-# EXTRA (lines added to the Block preconditioner subsection).
+# EXTRA (lines added to the Block preconditioner subsection), MODEL_EXTRA
+# (lines added to the Vesicle hydrodynamics subsection, e.g. "set Phase
+# field boundary condition = natural").
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 source tools/mpi-env.sh
@@ -17,6 +19,7 @@ sizes=${*:-8 16 32}
 METHOD=${METHOD:-fgmres-block}
 RANKS=${RANKS:-1 2}
 EXTRA=${EXTRA:-}
+MODEL_EXTRA=${MODEL_EXTRA:-}
 echo "vesicle in a box at rest, p = 3, eps = 0.125, method $METHOD; times in seconds per Newton iteration"
 echo "per-unit,ranks,unknowns,newton,krylov/newton,total/newton,assembly,pc-setup,solve,peak-MB"
 for m in $sizes; do
@@ -31,6 +34,7 @@ subsection Vesicle hydrodynamics
   set Epsilon = 0.125
   set Write VTU = false
   set Write membrane samples = false
+  $MODEL_EXTRA
   subsection Mesh
     set Lower corner = -2, -2
     set Upper corner = 2, 2

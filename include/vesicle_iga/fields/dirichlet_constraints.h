@@ -56,4 +56,21 @@ namespace vesicle_iga
                                const dealii::Tensor<1, dim> &)>
                                       &normal_derivative,
     dealii::AffineConstraints<double> &constraints);
+
+  /**
+   * Homogeneous Neumann condition du/dn = 0 on every non-periodic side of a
+   * box, strongly, for the components with @p components[c] == true. At an
+   * open end du/dn = (p/Delta)(c_1 - c_0), so the condition ties each
+   * coefficient of the first layer to its neighbour of the second layer;
+   * at edges and corners the coefficient is tied to the nearest one off
+   * every side (c_00 = c_11), which satisfies the conditions of all sides
+   * at once. Lines are added for locally relevant unknowns that are not
+   * constrained yet.
+   */
+  template <int dim>
+  void
+  add_zero_normal_derivative_constraints(
+    const SplineDofHandler<dim>       &dof_handler,
+    const std::vector<bool>           &components,
+    dealii::AffineConstraints<double> &constraints);
 } // namespace vesicle_iga

@@ -37,6 +37,14 @@ namespace vesicle_iga
     /// values themselves, lagged by a step as in the source
     /// (doc/hydrodynamics.md, "Global multipliers in time").
     bool extrapolated_multipliers = true;
+    /// Boundary condition of the phase fields: true (default) the source's
+    /// d phi_i / dn = 0 of spec 4.10, strongly; together with (H24) it
+    /// leaves d f_i / dn = 0 natural, the source's pair. false: natural
+    /// conditions only (f_i = d f_i / dn = 0), under which the kernel of
+    /// the bending operator holds boundary layers that a negative lambda_g
+    /// amplifies without bound (doc/hydrodynamics.md, "Phase-field
+    /// boundary condition").
+    bool zero_normal_derivative = true;
 
     /// 1 / (Re Ca), the factor of the bending force (H3).
     double
