@@ -762,20 +762,21 @@ namespace vesicle_iga
         // int phi'^k, and m_1 m_3 / m_2^2 = 6/5 for the tanh profile, so
         // det changes sign near a circle (ellipses: chi about 0.93 in the
         // sharp limit, between 0.96 and 0.99 at eps / R_0 = 1/8;
-        // doc/hydrodynamics.md, "Volume multiplier"). A negative det still
+        // doc/hydrodynamics.md, "What is missing"). A negative det still
         // holds both rates of (H13); near zero the multipliers diverge.
-        const double det  = s[0] * s[2] - s[1] * s[9];
-        const double gram = s[0] * s[2];
-        AssertThrow(std::abs(det) > 1e-2 * std::abs(gram),
+        const double det   = s[0] * s[2] - s[1] * s[9];
+        const double scale = s[0] * s[2];
+        AssertThrow(std::abs(det) > 1e-2 * std::abs(scale),
                     ExcMessage(
                       "(H13) is singular for vesicle " + std::to_string(i + 1)
-                      + ": its determinant is " + std::to_string(det / gram)
+                      + ": its determinant is " + std::to_string(det / scale)
                       + " of int beta int f^2"
                       + (membrane.membrane_volume_multiplier ?
-                           " (with 'Volume multiplier = membrane' the volume "
-                           "and area rates of a nearly circular or "
-                           "spherical vesicle, reduced area above about "
-                           "0.93, cannot be held independently; use "
+                           " (with 'Volume multiplier = membrane' it changes "
+                           "sign near a circle or sphere, at a reduced area "
+                           "between about 0.93 and 0.99 by eps / R_0, "
+                           "where the volume and area rates cannot be held "
+                           "independently; use "
                            "'Volume multiplier = domain' or a smaller "
                            "reduced area)" :
                            " (f is nearly constant: no interface)")));
