@@ -4,7 +4,9 @@
 
 #include <vesicle_iga/physics/initial_vesicle.h>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace vesicle_iga
 {
@@ -64,15 +66,17 @@ namespace vesicle_iga
 
 
   template <int dim>
-  InitialVesicle<dim>::InitialVesicle(const Point<dim>    &centre,
-                                      const double         radius,
-                                      const double         reduced,
-                                      const double         angle_degrees,
-                                      const StretchFormula formula)
+  InitialVesicle<dim>::InitialVesicle(const Point<dim>     &centre,
+                                      const double          radius,
+                                      const double          reduced,
+                                      const double          angle_degrees,
+                                      const StretchFormula  formula,
+                                      const DistanceFormula distance)
     : centre(centre)
     , radius(radius)
     , gamma(stretch_for(reduced, formula))
     , angle(angle_degrees * M_PI / 180.)
+    , distance(distance)
   {}
 
 
@@ -155,6 +159,51 @@ namespace vesicle_iga
   double
   InitialVesicle<dim>::signed_distance(const Point<dim> &x) const
   {
+    return distance == DistanceFormula::radial ? radial_distance(x) :
+                                                 level_set_distance(x);
+  }
+
+
+  template <int dim>
+  double
+  InitialVesicle<dim>::centre_jump(const double eps) const
+  {
+    if (distance != DistanceFormula::radial)
+      return 0;
+    // Along the major axis d -> -c at the centre, along a minor one -> -a.
+    return std::tanh(major_semi_axis() / (std::sqrt(2.) * eps))
+           - std::tanh(minor_semi_axis() / (std::sqrt(2.) * eps));
+  }
+
+
+  template <int dim>
+  double
+  InitialVesicle<dim>::level_set_distance(const Point<dim> &x) const
+  {
+    // F = (x'_major / c)^2 + sum_k (x'_minor,k / a)^2 - 1 and d = F / |grad
+    // F|: one Newton step towards the surface from F's own scale, so that
+    // |grad d| = grad F / |grad F| has unit length on F = 0.
+    const Tensor<1, dim> r = x - centre;
+    const double         c = major_semi_axis(), a = minor_semi_axis();
+    const double         major = r * major_axis();
+    double               F     = major * major / (c * c) - 1,
+           grad2               = std::pow(2 * major / (c * c), 2);
+    for (unsigned int k = 0; k + 1 < dim; ++k)
+      {
+        const double minor = r * minor_axis(k);
+        F += minor * minor / (a * a);
+        grad2 += std::pow(2 * minor / (a * a), 2);
+      }
+    if (grad2 == 0)
+      return -std::numeric_limits<double>::infinity();
+    return F / std::sqrt(grad2);
+  }
+
+
+  template <int dim>
+  double
+  InitialVesicle<dim>::radial_distance(const Point<dim> &x) const
+  {
     // rho = R on the surface: with x' the coordinates along the axes,
     // rho^2 = g^2 x'_minor^2 + x'_major^2 / g^2 (2D) and g^2 |x'_minor|^2 +
     // x'_major^2 / g^4 (3D).
@@ -187,6 +236,55 @@ namespace vesicle_iga
   InitialVesicle<dim>::phase_field(const Point<dim> &x, const double eps) const
   {
     return std::tanh(-signed_distance(x) / (std::sqrt(2.) * eps));
+  }
+
+
+  template <int dim>
+  double
+  InitialVesicle<dim>::mirrored_phase_field(
+    const Point<dim>            &x,
+    const double                 eps,
+    const Point<dim>            &lower,
+    const Point<dim>            &upper,
+    const std::array<bool, dim> &mirror) const
+  {
+    // Per direction the point itself and its reflections in the lower and
+    // upper wall: 3^dim images, of which those in unmirrored directions
+    // are skipped.
+    double       indicator = 0;
+    unsigned int n_images  = 1;
+    for (unsigned int d = 0; d < dim; ++d)
+      n_images *= 3;
+    for (unsigned int image = 0; image < n_images; ++image)
+      {
+        Point<dim>   y    = x;
+        unsigned int code = image;
+        bool         used = true;
+        for (unsigned int d = 0; d < dim; ++d, code /= 3)
+          if (code % 3 != 0)
+            {
+              used = used && mirror[d];
+              y[d] = 2 * (code % 3 == 1 ? lower[d] : upper[d]) - x[d];
+            }
+        if (used)
+          indicator += 0.5 * (1 + phase_field(y, eps));
+      }
+    return 2 * indicator - 1;
+  }
+
+
+  template <int dim>
+  double
+  InitialVesicle<dim>::wall_gap(const Point<dim>            &lower,
+                                const Point<dim>            &upper,
+                                const std::array<bool, dim> &mirror) const
+  {
+    double gap = std::numeric_limits<double>::infinity();
+    for (const auto &x : outline(dim == 2 ? 720 : 2000))
+      for (unsigned int d = 0; d < dim; ++d)
+        if (mirror[d])
+          gap = std::min({gap, x[d] - lower[d], upper[d] - x[d]});
+    return gap;
   }
 
 

@@ -21,10 +21,12 @@
 #include <vesicle_iga/studies/flow_study_parts.h>
 #include <vesicle_iga/studies/study.h>
 
+#include <array>
 #include <cmath>
 #include <fstream>
 #include <iomanip>
 #include <sstream>
+#include <tuple>
 
 namespace vesicle_iga
 {
@@ -200,21 +202,32 @@ namespace vesicle_iga
     private:
       void
       check_vesicles(const SplineSpace<dim> &space) const;
+      /// The box and the directions whose walls carry d phi / dn = 0.
+      std::tuple<Point<dim>, Point<dim>, std::array<bool, dim>>
+      walls() const;
+      /// Notes on rank 0 where phi_0 is not smooth or not compatible with
+      /// d phi / dn = 0 enough for its bending energy to converge under
+      /// refinement (doc/hydrodynamics.md, "Initial distance").
+      void
+      note_initial_defects(
+        const std::vector<InitialVesicle<dim>> &shapes) const;
 
-      RunContext                        &context;
-      BoxSpaceParameters                 box;
-      unsigned int                       degree;
-      int                                continuity;
-      MembraneCoefficients               membrane;
-      FlowBoundaryParameters             boundaries;
-      IncompressibleFlowParameters       flow_parameters;
-      PhaseFieldBlockParameters          phase_field_blocks;
-      TimeLoop::Parameters               loop_parameters;
-      std::vector<VesicleEntry<dim>>     vesicles;
-      InitialVesicleBase::StretchFormula stretch;
-      std::string                        initial_velocity;
-      bool                               write_vtu, write_tension;
-      double                             stabilisation_time_scale = 0;
+      RunContext                         &context;
+      BoxSpaceParameters                  box;
+      unsigned int                        degree;
+      int                                 continuity;
+      MembraneCoefficients                membrane;
+      FlowBoundaryParameters              boundaries;
+      IncompressibleFlowParameters        flow_parameters;
+      PhaseFieldBlockParameters           phase_field_blocks;
+      TimeLoop::Parameters                loop_parameters;
+      std::vector<VesicleEntry<dim>>      vesicles;
+      InitialVesicleBase::StretchFormula  stretch;
+      InitialVesicleBase::DistanceFormula distance;
+      bool                                mirrored_phase = false;
+      std::string                         initial_velocity;
+      bool                                write_vtu, write_tension;
+      double                              stabilisation_time_scale = 0;
     };
 
 
@@ -260,6 +273,10 @@ namespace vesicle_iga
       stretch                        = prm.get("Stretch formula") == "exact" ?
                                          InitialVesicleBase::StretchFormula::exact :
                                          InitialVesicleBase::StretchFormula::quadratic_mean;
+      distance                       = prm.get("Initial distance") == "radial" ?
+                                         InitialVesicleBase::DistanceFormula::radial :
+                                         InitialVesicleBase::DistanceFormula::level_set;
+      mirrored_phase                 = prm.get_bool("Mirrored initial phase");
       initial_velocity               = prm.get("Initial velocity");
       write_vtu                      = prm.get_bool("Write VTU");
       write_tension                  = prm.get_bool("Write membrane samples");
@@ -375,7 +392,8 @@ namespace vesicle_iga
       for (unsigned int i = 0; i < vesicles.size(); ++i)
         {
           const auto &v = vesicles[i];
-          shapes.emplace_back(v.centre, v.radius, v.reduced, v.angle, stretch);
+          shapes.emplace_back(
+            v.centre, v.radius, v.reduced, v.angle, stretch, distance);
           outlines.push_back(shapes.back().outline(dim == 2 ? 720 : 2000));
           const std::string name = "vesicle " + std::to_string(i + 1);
           for (const auto &x : outlines.back())
@@ -435,6 +453,64 @@ namespace vesicle_iga
 
 
     template <int dim>
+    std::tuple<Point<dim>, Point<dim>, std::array<bool, dim>>
+    VesicleHydrodynamicsStudy<dim>::walls() const
+    {
+      Point<dim>            lower, upper;
+      std::array<bool, dim> mirror;
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          lower[d]  = box.lower[d];
+          upper[d]  = box.upper[d];
+          mirror[d] = !box.periodic[d];
+        }
+      return {lower, upper, mirror};
+    }
+
+
+    template <int dim>
+    void
+    VesicleHydrodynamicsStudy<dim>::note_initial_defects(
+      const std::vector<InitialVesicle<dim>> &shapes) const
+    {
+      // Thresholds, scaled from tests/hydrodynamics/initial_distance by the
+      // square of the defect (its vesicle: bending energy 0.78): a jump of
+      // 5e-3 adds about 5e-3 at 64 per unit (0.5 for 0.052), a slope eps
+      // |d phi_0 / dn| of 5e-3 (membrane 4.5 eps from the wall) about 4e-4
+      // (0.025 for 0.042), growing like 1 / h^2 and 1 / h.
+      const double eps                  = membrane.epsilon;
+      const auto [lower, upper, mirror] = walls();
+      for (unsigned int i = 0; i < shapes.size(); ++i)
+        {
+          const std::string name = "vesicle " + std::to_string(i + 1);
+          if (shapes[i].centre_jump(eps) > 5e-3)
+            context.pcout
+              << "  Note: phi_0 of " << name << " jumps by "
+              << shapes[i].centre_jump(eps)
+              << " at its centre (radial distance of (H23), minor "
+                 "semi-axis below about 4 eps): its bending energy grows "
+                 "under refinement; 'Initial distance = level-set' is "
+                 "smooth."
+              << std::endl;
+          const double gap = shapes[i].wall_gap(lower, upper, mirror);
+          const double slope
+            = 1
+              / (std::sqrt(2.)
+                 * std::pow(std::cosh(gap / (std::sqrt(2.) * eps)), 2));
+          if (membrane.zero_normal_derivative && !mirrored_phase
+              && slope > 5e-3)
+            context.pcout
+              << "  Note: the membrane of " << name << " is " << gap / eps
+              << " eps from a wall, where eps d phi_0 / dn = " << slope
+              << " against d phi / dn = 0: its bending energy grows under "
+                 "refinement; 'Mirrored initial phase = true' is "
+                 "compatible."
+              << std::endl;
+        }
+    }
+
+
+    template <int dim>
     void
     VesicleHydrodynamicsStudy<dim>::run()
     {
@@ -469,10 +545,14 @@ namespace vesicle_iga
       std::vector<InitialVesicle<dim>> shapes;
       std::vector<std::function<double(const Point<dim> &)>> phases;
       for (const auto &v : vesicles)
-        shapes.emplace_back(v.centre, v.radius, v.reduced, v.angle, stretch);
+        shapes.emplace_back(
+          v.centre, v.radius, v.reduced, v.angle, stretch, distance);
+      const auto [lower, upper, mirror] = walls();
       for (const auto &shape : shapes)
-        phases.push_back([&shape, this](const Point<dim> &x) {
-          return shape.phase_field(x, membrane.epsilon);
+        phases.push_back([&, this](const Point<dim> &x) {
+          return mirrored_phase ? shape.mirrored_phase_field(
+                   x, membrane.epsilon, lower, upper, mirror) :
+                                  shape.phase_field(x, membrane.epsilon);
         });
       {
         TimerOutput::Scope scope(timer, "setup");
@@ -525,7 +605,10 @@ namespace vesicle_iga
                       << vesicles[i].centre << ", R_0 " << vesicles[i].radius
                       << ", gamma_e " << shapes[i].stretch()
                       << (dim == 2 ? ", reduced area " : ", reduced volume ")
-                      << shapes[i].actual_reduced_measure() << std::endl;
+                      << shapes[i].actual_reduced_measure() << ", lambda_g "
+                      << model.area_multipliers()[i] << ", lambda_v "
+                      << model.volume_multipliers()[i] << std::endl;
+      note_initial_defects(shapes);
       loop.run(model);
     }
   } // namespace
@@ -663,6 +746,29 @@ namespace vesicle_iga
                           "gamma_e of (H23) from chi: exact (the ellipse has "
                           "reduced area chi) or the source's quadratic-mean "
                           "perimeter (spec 4.11; 2D only, 3D is exact).");
+        prm.declare_entry(
+          "Initial distance",
+          "radial",
+          Patterns::Selection("radial|level-set"),
+          "The signed distance d in phi_0 = tanh(-d / (sqrt2 eps)) of "
+          "(H23). radial: the spec's distance along the ray from the "
+          "centre; for an ellipse phi_0 jumps at the centre by tanh(c / "
+          "(sqrt2 eps)) - tanh(a / (sqrt2 eps)) (semi-axes c > a), "
+          "negligible once a > 5 eps but not for smaller vesicles, whose "
+          "bending energy and multipliers then grow under refinement. "
+          "level-set: d = F / |grad F| for the ellipse's quadratic F, with "
+          "the same zero set and unit slope on it, smooth everywhere "
+          "(doc/hydrodynamics.md, \"Initial distance\").");
+        prm.declare_entry(
+          "Mirrored initial phase",
+          "false",
+          Patterns::Bool(),
+          "Make phi_0 compatible with d phi / dn = 0 on the non-periodic "
+          "walls: the indicator (1 + phi_0) / 2 summed over each vesicle "
+          "and its mirror images in the walls. Without it a membrane closer "
+          "than about 5 eps to a wall has d phi_0 / dn != 0 there, and the "
+          "constraint makes a layer whose bending energy grows like 1 / h "
+          "(doc/hydrodynamics.md, \"Initial distance\").");
         prm.declare_entry("Initial velocity",
                           "0; 0",
                           Patterns::Anything(),

@@ -2,6 +2,7 @@
 
 #include <deal.II/base/point.h>
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -19,6 +20,27 @@ namespace vesicle_iga
     {
       exact,
       quadratic_mean
+    };
+
+    /// The signed distance d in phi_0 = tanh(-d / (sqrt2 eps)):
+    /// - radial: (H23), the distance to the surface along the ray from the
+    ///   centre. Exact for a circle, but for an ellipse d tends to -R_0 r /
+    ///   rho at the centre, which depends on the direction: phi_0 jumps
+    ///   there by centre_jump(), and its bending energy grows like 1 / h^2
+    ///   under refinement once that jump is resolved (doc/hydrodynamics.md,
+    ///   "Initial distance").
+    /// - level_set: d = F / |grad F| with F = sum_k (x'_k / a_k)^2 - 1 in
+    ///   the axes' coordinates: zero on the same ellipse (ellipsoid), |grad
+    ///   d| = 1 on it, smooth everywhere, and d -> -infinity at the centre
+    ///   (phi_0 -> 1 with all its derivatives). Away from the surface it is
+    ///   the distance to first order only: d = (r^2 - R^2) / (2 r) for a
+    ///   circle.
+    /// (The true distance is no remedy: its kink on the medial axis gives a
+    /// bending energy growing like 1 / h.)
+    enum class DistanceFormula
+    {
+      radial,
+      level_set
     };
 
     /// The perimeter of an ellipse with semi-axes a, b (Gauss-Legendre on
@@ -56,7 +78,8 @@ namespace vesicle_iga
                    const double              radius,
                    const double              reduced,
                    const double              angle_degrees,
-                   const StretchFormula      formula = StretchFormula::exact);
+                   const StretchFormula      formula = StretchFormula::exact,
+                   const DistanceFormula distance    = DistanceFormula::radial);
 
     /// gamma_e (see the class description).
     double
@@ -68,12 +91,39 @@ namespace vesicle_iga
     /// built.
     double
     actual_reduced_measure() const;
-    /// The signed radial distance d of (H23) (negative inside).
+    /// The signed distance d of the DistanceFormula chosen (negative
+    /// inside; -infinity at the centre for the level-set distance).
     double
     signed_distance(const dealii::Point<dim> &x) const;
+    /// How much phi_0 of the radial distance (H23) jumps at the centre:
+    /// tanh(c / (sqrt2 eps)) - tanh(a / (sqrt2 eps)) with c, a the major
+    /// and minor semi-axes (0 for the level-set distance and for a circle).
+    double
+    centre_jump(const double eps) const;
     /// phi_0 of (H23).
     double
     phase_field(const dealii::Point<dim> &x, const double eps) const;
+    /// phi_0 made compatible with d phi / dn = 0 on the walls of the box
+    /// [lower, upper] normal to the directions of @p mirror: the indicator
+    /// (1 + phi_0) / 2 summed over the vesicle and its mirror images in
+    /// those walls (corner images included), so that its normal derivative
+    /// vanishes on each wall up to the image of the opposite wall's image,
+    /// exp(-2 L / (sqrt2 eps)) for a box of width L. Without it, a membrane
+    /// a few eps from a wall has d phi_0 / dn != 0 there; the constraint
+    /// cuts that slope in a layer of width h, whose bending energy grows
+    /// like 1 / h (doc/hydrodynamics.md, "Initial distance").
+    double
+    mirrored_phase_field(const dealii::Point<dim>    &x,
+                         const double                 eps,
+                         const dealii::Point<dim>    &lower,
+                         const dealii::Point<dim>    &upper,
+                         const std::array<bool, dim> &mirror) const;
+    /// The smallest distance from the outline to a wall of the box normal
+    /// to the directions of @p mirror (infinity if there are none).
+    double
+    wall_gap(const dealii::Point<dim>    &lower,
+             const dealii::Point<dim>    &upper,
+             const std::array<bool, dim> &mirror) const;
     /// About n points on the zero level set (for the overlap and boundary
     /// checks and for plots): equally spaced in the parameter angle in 2D,
     /// a latitude-longitude grid in 3D.
@@ -97,7 +147,13 @@ namespace vesicle_iga
     double
     minor_semi_axis() const;
 
+    double
+    radial_distance(const dealii::Point<dim> &x) const;
+    double
+    level_set_distance(const dealii::Point<dim> &x) const;
+
     dealii::Point<dim> centre;
     double             radius, gamma, angle;
+    DistanceFormula    distance;
   };
 } // namespace vesicle_iga
