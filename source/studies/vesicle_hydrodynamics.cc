@@ -202,7 +202,7 @@ namespace vesicle_iga
     private:
       void
       check_vesicles(const SplineSpace<dim> &space) const;
-      /// The box and the directions whose walls carry d phi / dn = 0.
+      /// The box and its non-periodic directions (those with walls).
       std::tuple<Point<dim>, Point<dim>, std::array<bool, dim>>
       walls() const;
       /// Notes on rank 0 where phi_0 is not smooth or not compatible with

@@ -150,10 +150,9 @@ int
 main(int argc, char *argv[])
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const bool    root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
-  std::ofstream out(root ? "output" : "/dev/null");
-  std::ostringstream quiet;
-  TimerOutput        timer(quiet, TimerOutput::never, TimerOutput::wall_times);
+  std::ofstream                    out = root_output();
+  std::ostringstream               quiet;
+  TimerOutput timer(quiet, TimerOutput::never, TimerOutput::wall_times);
 
   const Outcome direct = run("direct", "cahouet-chabard", timer);
   const Outcome block  = run("fgmres-block", "cahouet-chabard", timer);
@@ -176,7 +175,7 @@ main(int argc, char *argv[])
       << verdict(difference(stabilized, direct) < 1e-7) << '\n'
       << "stabilized: FGMRES iterations per Newton iteration < 30: "
       << verdict(per_newton_stabilized < 30) << '\n';
-  if (root)
+  if (root_rank())
     std::cout << "difference " << difference(block, direct) << " krylov/newton "
               << per_newton << " (" << block.newton << " Newton) asymmetry "
               << asymmetry(direct) << ' ' << asymmetry(block)

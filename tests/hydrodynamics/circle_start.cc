@@ -104,8 +104,7 @@ int
 main(int argc, char *argv[])
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const bool    root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
-  std::ofstream out(root ? "output" : "/dev/null");
+  std::ofstream                    out = root_output();
   for (const double chi : {1., 0.99, 0.9})
     {
       const Start s16 = start(chi, 16, true), s32 = start(chi, 32, true),

@@ -178,10 +178,9 @@ int
 main(int argc, char *argv[])
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const bool    root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
-  std::ofstream out(root ? "output" : "/dev/null");
-  std::ostringstream quiet;
-  TimerOutput        timer(quiet, TimerOutput::never, TimerOutput::wall_times);
+  std::ofstream                    out = root_output();
+  std::ostringstream               quiet;
+  TimerOutput timer(quiet, TimerOutput::never, TimerOutput::wall_times);
 
   const Outcome single = run(1, timer), pair = run(2, timer);
   const auto    swap    = difference(pair, 1, pair, 0, period);
@@ -208,7 +207,7 @@ main(int argc, char *argv[])
       << verdict(kinetic < 1e-5) << '\n'
       << "the shear tilts the vesicle (> 1e-2 rad): " << verdict(tilt > 1e-2)
       << '\n';
-  if (root)
+  if (root_rank())
     std::cout << "swap " << swap[0] << ' ' << swap[1] << ' ' << swap[2]
               << " one " << one[0] << ' ' << one[1] << ' ' << one[2] << " two "
               << two[0] << ' ' << two[1] << ' ' << two[2] << " kinetic "

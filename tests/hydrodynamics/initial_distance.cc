@@ -147,8 +147,7 @@ int
 main(int argc, char *argv[])
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const bool    root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
-  std::ofstream out(root ? "output" : "/dev/null");
+  std::ofstream                    out = root_output();
 
   const Point<2>          c2(0.1, -0.2);
   const InitialVesicle<2> ellipse(c2,

@@ -80,13 +80,11 @@ int
 main(int argc, char *argv[])
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  std::ofstream  out(Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0 ?
-                      "output" :
-                      "/dev/null");
-  const MPI_Comm comm = MPI_COMM_WORLD;
-  const SplineSpace<2> space(cubic_box_knots(64, 0., 2.));
-  const PatchMesh<2>   mesh(comm, space, nullptr);
-  FieldLayout<2>       layout;
+  std::ofstream                    out  = root_output();
+  const MPI_Comm                   comm = MPI_COMM_WORLD;
+  const SplineSpace<2>             space(cubic_box_knots(64, 0., 2.));
+  const PatchMesh<2>               mesh(comm, space, nullptr);
+  FieldLayout<2>                   layout;
   layout.add_space(space);
   layout.add_field("velocity", 2, 0);
   layout.add_field("pressure", 1, 0, FieldKind::algebraic);

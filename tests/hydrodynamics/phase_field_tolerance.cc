@@ -109,10 +109,9 @@ int
 main(int argc, char *argv[])
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const bool    root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
-  std::ofstream out(root ? "output" : "/dev/null");
-  std::ostringstream quiet;
-  TimerOutput        timer(quiet, TimerOutput::never, TimerOutput::wall_times);
+  std::ofstream                    out = root_output();
+  std::ostringstream               quiet;
+  TimerOutput timer(quiet, TimerOutput::never, TimerOutput::wall_times);
 
   const auto rel = [](const double a, const double b) {
     return std::abs(a - b) / std::max(std::abs(b), 1e-300);
@@ -139,7 +138,7 @@ main(int argc, char *argv[])
             << verdict(cycle.per_newton >= 2. * inner.per_newton) << '\n';
       out << "  same state with all three (1e-7): "
           << verdict(same_state(cycle) && same_state(inner)) << '\n';
-      if (root)
+      if (root_rank())
         std::cout << "FGMRES per Newton: exact " << exact.per_newton
                   << ", one V-cycle " << cycle.per_newton << ", inner GMRES "
                   << inner.per_newton << "; differences "

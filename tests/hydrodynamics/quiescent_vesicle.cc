@@ -46,10 +46,9 @@ int
 main(int argc, char *argv[])
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const bool    root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
-  std::ofstream out(root ? "output" : "/dev/null");
-  std::ostringstream quiet;
-  TimerOutput        timer(quiet, TimerOutput::never, TimerOutput::wall_times);
+  std::ofstream                    out = root_output();
+  std::ostringstream               quiet;
+  TimerOutput timer(quiet, TimerOutput::never, TimerOutput::wall_times);
 
   const SplineSpace<2> space(cubic_box_knots(32, 0., 2.));
 
@@ -114,7 +113,7 @@ main(int argc, char *argv[])
       << verdict(worst_centroid < 1e-9 && worst_angle < 1e-9) << '\n'
       << "weak induced flow (0 < E_kin < 1e-4 E_B): "
       << verdict(kinetic > 0 && kinetic < 1e-4 * m.bending_energy) << '\n';
-  if (root)
+  if (root_rank())
     std::cout << "rise " << worst_rise << " dV " << worst_volume << " dA "
               << worst_area << " powers " << advection << ' ' << forcing
               << " centroid " << worst_centroid << " angle " << worst_angle

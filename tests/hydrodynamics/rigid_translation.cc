@@ -91,10 +91,9 @@ int
 main(int argc, char *argv[])
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const bool    root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
-  std::ofstream out(root ? "output" : "/dev/null");
-  std::ostringstream quiet;
-  TimerOutput        timer(quiet, TimerOutput::never, TimerOutput::wall_times);
+  std::ofstream                    out = root_output();
+  std::ostringstream               quiet;
+  TimerOutput timer(quiet, TimerOutput::never, TimerOutput::wall_times);
 
   const Outcome rest = run(0., timer), moving = run(1., timer);
   // Generalized-alpha (N2)-(N3), rho_inf = 0.5, for x' = U from rate 0.
@@ -128,7 +127,7 @@ main(int argc, char *argv[])
       << "angle stays pi/2 (1e-6): "
       << verdict(std::abs(std::abs(moving.last.angle) - M_PI / 2) < 1e-6)
       << '\n';
-  if (root)
+  if (root_rank())
     std::cout << "shift " << shift << " drift " << drift << " dE_B rel "
               << bending << " (rest "
               << rest.last.bending_energy - rest.first.bending_energy

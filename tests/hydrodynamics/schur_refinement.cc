@@ -106,10 +106,9 @@ int
 main(int argc, char *argv[])
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const bool    root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
-  std::ofstream out(root ? "output" : "/dev/null");
-  std::ostringstream quiet;
-  TimerOutput        timer(quiet, TimerOutput::never, TimerOutput::wall_times);
+  std::ofstream                    out = root_output();
+  std::ostringstream               quiet;
+  TimerOutput timer(quiet, TimerOutput::never, TimerOutput::wall_times);
 
   const Outcome coarse = run(8, "stabilized-cahouet-chabard", timer);
   const Outcome fine   = run(16, "stabilized-cahouet-chabard", timer);
@@ -135,7 +134,7 @@ main(int argc, char *argv[])
       << verdict(rel(fine.area, lumped.area) < 1e-7
                  && rel(fine.bending, lumped.bending) < 1e-7)
       << '\n';
-  if (root)
+  if (root_rank())
     std::cout << "FGMRES per Newton: stabilized " << coarse.per_newton << " / "
               << fine.per_newton << ", lumped at 16 " << lumped.per_newton
               << ", inner GMRES at 16 " << inner.per_newton << "; differences "

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <deal.II/base/function.h>
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/timer.h>
 
 #include <vesicle_iga/models/vesicle_hydrodynamics.h>
@@ -12,11 +13,26 @@
 
 #include <array>
 #include <cmath>
+#include <fstream>
 #include <memory>
 #include <vector>
 
 namespace vesicle_iga
 {
+  /// Whether this is rank 0, which writes the test's output.
+  inline bool
+  root_rank()
+  {
+    return dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+  }
+
+  /// The test's "output" on rank 0, a sink on the others.
+  inline std::ofstream
+  root_output()
+  {
+    return std::ofstream(root_rank() ? "output" : "/dev/null");
+  }
+
   /// Cubic C^2 knot vectors of [x_0, x_1] x [y_0, y_1] with n_x x n_y
   /// uniform elements.
   inline std::array<KnotVector, 2>
