@@ -7,8 +7,8 @@
 #include <vesicle_iga/fields/natural_numbering.h>
 #include <vesicle_iga/models/incompressible_flow.h>
 #include <vesicle_iga/solvers/flow_block_preconditioner.h>
+#include <vesicle_iga/solvers/gram_solver.h>
 #include <vesicle_iga/solvers/spline_multigrid.h>
-#include <vesicle_iga/terms/rate.h>
 
 namespace vesicle_iga
 {
@@ -233,28 +233,12 @@ namespace vesicle_iga
     // of the flow block (one scalar field on the same mesh: the same
     // owners and order of the basis functions), as the Jacobian of a rate
     // term with respect to the rate.
-    const SplineDofHandler<dim>       pressure_dofs(patch_mesh, space, 1);
-    TrilinosWrappers::SparsityPattern sparsity;
-    pressure_dofs.make_sparsity_pattern(sparsity);
+    const SplineDofHandler<dim> pressure_dofs(patch_mesh, space, 1);
     auto mass = std::make_shared<TrilinosWrappers::SparseMatrix>();
-    mass->reinit(sparsity);
-    SystemAssembler<dim> mass_assembler(pressure_dofs,
-                                        assembler.get_quadrature());
-    RateTerm<dim>        rate({0});
-    mass_assembler.add_term(rate);
-    const TrilinosWrappers::MPI::Vector zero(
-      pressure_dofs.locally_owned_dofs(),
-      pressure_dofs.locally_relevant_dofs(),
-      comm);
-    AssemblyState state;
-    state.value        = &zero;
-    state.rate         = &zero;
-    state.value_factor = {0.};
-    state.rate_factor  = {1.};
-    mass_assembler.assemble(state,
-                            AffineConstraints<double>(),
-                            nullptr,
-                            mass.get());
+    assemble_gram_matrix(pressure_dofs,
+                         assembler.get_quadrature(),
+                         AffineConstraints<double>(),
+                         *mass);
     return mass;
   }
 

@@ -7,6 +7,7 @@
 #include <vesicle_iga/base/input_error.h>
 #include <vesicle_iga/fields/dirichlet_constraints.h>
 #include <vesicle_iga/models/vesicle_hydrodynamics.h>
+#include <vesicle_iga/solvers/gram_solver.h>
 #include <vesicle_iga/solvers/vesicle_block_preconditioner.h>
 
 #include <cmath>
@@ -109,107 +110,6 @@ namespace vesicle_iga
       const Point<dim>             reference;
       InputHandle                  value;
       std::array<InputHandle, dim> gradient;
-    };
-
-
-    /// The integrals of (H13) for vesicle i: int beta, int f, int f^2,
-    /// int u.grad phi, int (u.grad phi) f, int g, int g f, int vs, int vs f,
-    /// int beta f, with beta the weight of lambda_v in (H1) (1: int beta =
-    /// |Omega|),
-    /// with int g = -c int s f and int g f = -c int (|grad f|^2 + s f^2)
-    /// (H3 integrated by parts with d_n f = 0), s = (3 phi^2 - 1) / eps^2,
-    /// vs_i = sum over j != i of (H11).
-    template <int dim>
-    class MultiplierIntegrals : public Integrand<dim>
-    {
-    public:
-      MultiplierIntegrals(const unsigned int               i,
-                          const std::vector<unsigned int> &phases,
-                          const MembraneCoefficients      &coefficients)
-        : i(i)
-        , phases(phases)
-        , coefficients(coefficients)
-        , potential(0, 0, 0, coefficients)
-      {}
-      unsigned int
-      n_values() const override
-      {
-        return 10;
-      }
-      void
-      declare(TermDeclaration<dim> &d) override
-      {
-        using D = Derivative<dim>;
-        for (unsigned int a = 0; a < dim; ++a)
-          u[a] = d.value(a, D::value);
-        values.clear();
-        for (const unsigned int phi : phases)
-          values.push_back(d.value(phi, D::value));
-        laplacian = d.value(phases[i], D::laplacian);
-        for (unsigned int k = 0; k < dim; ++k)
-          {
-            gradient[k] = d.value(phases[i], D::gradient(k));
-            gradient_of_laplacian[k]
-              = d.value(phases[i], D::gradient_of_laplacian(k));
-          }
-      }
-      void
-      integrate(const QuadratureInputs<dim> &in,
-                const double                *JxW,
-                double                      *sums) const override
-      {
-        const double eps = coefficients.epsilon;
-        const double c   = coefficients.bending_factor();
-        for (unsigned int q = 0; q < in.size(); ++q)
-          {
-            const double p = in[values[i]][q];
-            const double f
-              = membrane::chemical_potential(p, in[laplacian][q], eps);
-            const double s         = (3 * p * p - 1) / (eps * eps);
-            double       advection = 0, grad_f2 = 0, grad_f_grad_phi = 0;
-            for (unsigned int k = 0; k < dim; ++k)
-              {
-                advection += in[u[k]][q] * in[gradient[k]][q];
-                const double df = eps * in[gradient_of_laplacian[k]][q]
-                                  - (3 * p * p - 1) / eps * in[gradient[k]][q];
-                grad_f2 += df * df;
-                grad_f_grad_phi += df * in[gradient[k]][q];
-              }
-            // lambda_g enters (H16) as lambda_g A'(phi)[r] (the first
-            // variation of (H12c), see GlobalConstraintForcingFormula):
-            // with r = 1 and r = f its coefficients are -A'[1] and -A'[f],
-            // int f and int f^2 up to the boundary terms eps int d_n phi
-            // and eps int f d_n phi. Taken as the equation has them, the
-            // volume law of (H13) holds to round-off.
-            const double well = (p * p - 1) * p / eps;
-            double       vs   = 0;
-            for (unsigned int j = 0; j < phases.size(); ++j)
-              if (j != i)
-                vs += potential.potential(p, in[values[j]][q]);
-            const double w    = JxW[q];
-            const double beta = membrane::volume_multiplier_weight(
-              p, eps, coefficients.membrane_volume_multiplier);
-            sums[0] += beta * w;
-            sums[1] += -well * w;
-            sums[2] += -(eps * grad_f_grad_phi + f * well) * w;
-            sums[3] += advection * w;
-            sums[4] += advection * f * w;
-            sums[5] += -c * s * f * w;
-            sums[6] += -c * (grad_f2 + s * f * f) * w;
-            sums[7] += vs * w;
-            sums[8] += vs * f * w;
-            sums[9] += beta * f * w;
-          }
-      }
-
-    private:
-      const unsigned int                   i;
-      const std::vector<unsigned int>      phases;
-      const MembraneCoefficients           coefficients;
-      const VesicleInteractionFormula<dim> potential;
-      std::array<InputHandle, dim>         u, gradient, gradient_of_laplacian;
-      std::vector<InputHandle>             values;
-      InputHandle                          laplacian;
     };
 
 
@@ -345,6 +245,7 @@ namespace vesicle_iga
     const PhaseFieldBlockParameters           &phase_field_blocks)
     : membrane(membrane)
     , flow_coefficients(flow)
+    , timer(timer)
     , phase_field_blocks(phase_field_blocks)
     , n(n_vesicles)
     , area_0(n_vesicles)
@@ -399,7 +300,21 @@ namespace vesicle_iga
     const unsigned int nc   = dofs.n_components();
     for (const auto g : dofs.locally_owned_dofs())
       phase_entries.push_back(g % nc > dim && g % nc <= dim + n);
+    const bool zero_normal_derivative = membrane.zero_normal_derivative;
+    phase_gram                        = std::make_unique<GramSolver<dim>>(
+      flow_model->mesh(),
+      dofs.get_space(),
+      flow_model->get_assembler().get_quadrature(),
+      [zero_normal_derivative](const SplineDofHandler<dim> &d,
+                               AffineConstraints<double>   &c) {
+        if (zero_normal_derivative)
+          add_zero_normal_derivative_constraints<dim>(d, {true}, c);
+      });
   }
+
+
+  template <int dim>
+  VesicleHydrodynamics<dim>::~VesicleHydrodynamics() = default;
 
 
   template <int dim>
@@ -715,57 +630,137 @@ namespace vesicle_iga
 
 
   template <int dim>
+  std::array<TrilinosWrappers::MPI::Vector, 3>
+  VesicleHydrodynamics<dim>::phase_row_residuals() const
+  {
+    const auto &dofs  = flow_model->dofs();
+    const auto  comm  = dofs.get_mesh().get_communicator();
+    const auto &owned = dofs.locally_owned_dofs();
+    const TrilinosWrappers::MPI::Vector zero_rate(owned,
+                                                  dofs.locally_relevant_dofs(),
+                                                  comm);
+    AssemblyState                       state;
+    state.value            = &flow_model->solution();
+    state.rate             = &zero_rate;
+    state.time             = time();
+    const auto &increments = flow_model->increment_constraints();
+    std::array<TrilinosWrappers::MPI::Vector, 3> r;
+    for (auto &v : r)
+      v.reinit(owned, comm);
+    {
+      // Every term with a phase-field row but the multipliers'.
+      SystemAssembler<dim> rows(dofs,
+                                flow_model->get_assembler().get_quadrature());
+      for (unsigned int i = 0; i < n; ++i)
+        {
+          rows.add_term(*advection[i]);
+          rows.add_term(*inflow[i]);
+          rows.add_term(*bending[i]);
+        }
+      for (auto &term : interaction)
+        rows.add_term(*term);
+      rows.assemble(state, increments, &r[0], nullptr);
+    }
+    SystemAssembler<dim> rows(dofs,
+                              flow_model->get_assembler().get_quadrature());
+    for (auto &term : constraint)
+      rows.add_term(*term);
+    for (unsigned int k = 1; k < 3; ++k)
+      {
+        for (auto &term : constraint)
+          term->get_formula().set_multipliers(k == 1, k == 2);
+        rows.assemble(state, increments, &r[k], nullptr);
+      }
+    return r;
+  }
+
+
+  template <int dim>
   void
   VesicleHydrodynamics<dim>::update_multipliers(const double dt)
   {
-    std::vector<unsigned int> phases;
-    for (unsigned int i = 0; i < n; ++i)
-      phases.push_back(phase(i));
+    // (H13) from the discrete equations themselves. On the rows of phi_i,
+    // tested with the basis psi_j of the space with its strong conditions,
+    //   M d_t phi_i + R_0 + lambda_g F_g + lambda_v F_v = 0,
+    // with R_0 the residual of the other terms at zero rate and F_g, F_v
+    // that of the multipliers' term per unit multiplier (F_g(v) = eta_phi
+    // A'(phi)[v]). Then dV_i/dt = (d_t phi_i, 1) = -(R_0 + ...)(1), as
+    // sum_j psi_j = 1, and dA_i/dt = A'[d_t phi_i] = -(R_0 + ...)(Y) /
+    // eta_phi with Y = M^-1 F_g, the projection of -eta_phi f_i onto the
+    // space. Written with the pointwise f_i instead of Y (as (H13) reads)
+    // the area law is off by the projection error of f_i, a constant drift
+    // that the relaxation turns into an area error of order dt
+    // (doc/hydrodynamics.md, "Global multipliers in time").
+    const auto residuals = phase_row_residuals();
     std::vector<std::unique_ptr<Integrand<dim>>> owned;
     std::vector<Integrand<dim> *>                list;
     for (unsigned int i = 0; i < n; ++i)
-      owned.push_back(
-        std::make_unique<MultiplierIntegrals<dim>>(i, phases, membrane));
-    // A_i and V_i (the first two geometry sums) in the same pass.
-    for (unsigned int i = 0; i < n; ++i)
-      owned.push_back(std::make_unique<VesicleGeometry<dim>>(
-        phase(i), membrane.epsilon, periodic_box, Point<dim>()));
-    for (auto &o : owned)
-      list.push_back(o.get());
+      {
+        owned.push_back(std::make_unique<VesicleGeometry<dim>>(
+          phase(i), membrane.epsilon, periodic_box, Point<dim>()));
+        list.push_back(owned.back().get());
+      }
     AssemblyState state;
-    state.value            = &flow_model->solution();
-    const auto    sums     = flow_model->get_assembler().integrate(list, state);
-    const double *geometry = &sums[10 * n];
-    const double  eta      = membrane.mobility;
+    state.value         = &flow_model->solution();
+    const auto geometry = flow_model->get_assembler().integrate(list, state);
+
+    const auto        &dofs = flow_model->dofs();
+    const unsigned int nc   = dofs.n_components();
+    const double       eta  = membrane.mobility;
     for (unsigned int i = 0; i < n; ++i)
       {
-        const double *s = &sums[10 * i];
-        // (H13) with the weight beta of lambda_v in (H1) (beta = 1: the
-        // source's |Omega| and int f):
-        //   [int beta, int f; int beta f, int f^2] (lambda_v, lambda_g) = b,
-        // from d/dt V_i = int d_t phi_i and d/dt A_i = -int f_i d_t phi_i.
-        double b_v = s[3] / eta + s[5] + s[7];
-        double b_g = s[4] / eta + s[6] + s[8];
+        // The rows of phi_i as vectors of the one-component space.
+        std::array<TrilinosWrappers::MPI::Vector, 3> x;
+        for (auto &v : x)
+          v.reinit(phase_gram->locally_owned_dofs(),
+                   dofs.get_mesh().get_communicator());
+        for (const auto g : dofs.locally_owned_dofs())
+          if (g % nc == phase(i))
+            for (unsigned int k = 0; k < 3; ++k)
+              x[k](g / nc) = residuals[k](g);
+        for (auto &v : x)
+          v.compress(VectorOperation::insert);
+        TrilinosWrappers::MPI::Vector y;
+        phase_gram->solve(x[1], y);
+        // X(1) and X(Y) for X = R_0, F_g, F_v.
+        std::array<double, 6> sums;
+        for (unsigned int k = 0; k < 3; ++k)
+          {
+            double total = 0;
+            for (const auto j : x[k].locally_owned_elements())
+              total += x[k](j);
+            sums[k]     = total;
+            sums[3 + k] = x[k] * y;
+          }
+        // (The dot products x * y are global already.)
+        Utilities::MPI::sum(ArrayView<const double>(sums.data(), 3),
+                            dofs.get_mesh().get_communicator(),
+                            ArrayView<double>(sums.data(), 3));
+        const double area   = geometry[VesicleGeometry<dim>::n_sums * i];
+        const double volume = geometry[VesicleGeometry<dim>::n_sums * i + 1];
+        // [F_v(1) F_g(1); F_v(Y) F_g(Y)] (lambda_v, lambda_g) = b: the laws
+        // dV/dt = eta_phi (V(0) - V) / (2 dt), dA/dt = the same with A.
+        double b_v = -sums[0], b_g = -sums[3];
         if (dt > 0)
           {
-            b_v
-              += (volume_0[i] - geometry[VesicleGeometry<dim>::n_sums * i + 1])
-                 / (2 * dt);
-            b_g -= (area_0[i] - geometry[VesicleGeometry<dim>::n_sums * i])
-                   / (2 * dt);
+            b_v -= eta * (volume_0[i] - volume) / (2 * dt);
+            b_g -= eta * eta * (area_0[i] - area) / (2 * dt);
           }
-        // With beta = 1 this is the Gram determinant |Omega| int f^2 -
-        // (int f)^2 of spec 4.6, positive unless f is constant. With the
-        // membrane weight beta = delta_eps it is not a Gram determinant:
-        // for f = eps kappa phi' along the membrane and beta ~ phi'^2 across
-        // it, det ~ m_2^2 L int kappa^2 - m_1 m_3 (int kappa)^2 with m_k =
-        // int phi'^k, and m_1 m_3 / m_2^2 = 6/5 for the tanh profile, so
-        // det changes sign near a circle (ellipses: chi about 0.93 in the
-        // sharp limit, between 0.96 and 0.99 at eps / R_0 = 1/8;
-        // doc/hydrodynamics.md, "What is missing"). A negative det still
-        // holds both rates of (H13); near zero the multipliers diverge.
-        const double det   = s[0] * s[2] - s[1] * s[9];
-        const double scale = s[0] * s[2];
+        const double a_vv = sums[2], a_vg = sums[1];
+        const double a_gv = sums[5], a_gg = sums[4];
+        // With beta = 1 (Volume multiplier = domain) and the pointwise f
+        // this was the Gram determinant |Omega| int f^2 - (int f)^2 of spec
+        // 4.6. With the membrane weight beta = delta_eps it is not a Gram
+        // determinant: for f = eps kappa phi' along the membrane and beta ~
+        // phi'^2 across it, det ~ m_2^2 L int kappa^2 - m_1 m_3 (int
+        // kappa)^2 with m_k = int phi'^k, and m_1 m_3 / m_2^2 = 6/5 for the
+        // tanh profile, so det changes sign near a circle (ellipses: chi
+        // about 0.93 in the sharp limit, between 0.96 and 0.99 at eps / R_0
+        // = 1/8; doc/hydrodynamics.md, "What is missing"). A negative det
+        // still holds both rates of (H13); near zero the multipliers
+        // diverge.
+        const double det   = a_vv * a_gg - a_vg * a_gv;
+        const double scale = a_vv * a_gg;
         AssertThrow(std::abs(det) > 1e-2 * std::abs(scale),
                     ExcMessage(
                       "(H13) is singular for vesicle " + std::to_string(i + 1)
@@ -780,14 +775,15 @@ namespace vesicle_iga
                            "'Volume multiplier = domain' or a smaller "
                            "reduced area)" :
                            " (f is nearly constant: no interface)")));
-        const double v   = (s[2] * b_v - s[1] * b_g) / det;
-        const double g   = (s[0] * b_g - s[9] * b_v) / det;
+        const double v   = (a_gg * b_v - a_vg * b_g) / det;
+        const double g   = (a_vv * b_g - a_gv * b_v) / det;
         lambda_v_rate[i] = dt > 0 ? (v - lambda_v[i]) / dt : 0.;
         lambda_g_rate[i] = dt > 0 ? (g - lambda_g[i]) / dt : 0.;
         lambda_v[i]      = v;
         lambda_g[i]      = g;
-        constraint[i]->get_formula().set_multipliers(lambda_g[i], lambda_v[i]);
       }
+    for (unsigned int i = 0; i < n; ++i)
+      constraint[i]->get_formula().set_multipliers(lambda_g[i], lambda_v[i]);
   }
 
 
@@ -815,6 +811,7 @@ namespace vesicle_iga
   VesicleHydrodynamics<dim>::accept_step()
   {
     flow_model->accept_step();
+    TimerOutput::Scope scope(timer, "global multipliers");
     update_multipliers(last_dt);
   }
 

@@ -11,10 +11,13 @@
 //   testing (H16) with r = 1 gives dV/dt of (H13) with the integrands of the
 //   previous step, spec 4.6): |dV/V| < 1e-5 (1.2e-6 measured), far below
 //   the area error, which also carries the projection error of f;
-// - the area law of (H13) holds for the continuous equations only (f is not
-//   in the spline space); the relaxation term of (H13) bounds the error by
-//   (drift rate) 2 dt / eta_phi, with a drift rate below 0.1 measured at
-//   this resolution: |dA/A| < 2e-3;
+// - the area law of (H13) holds for the discrete equations too ((H13) is
+//   taken from them, doc/hydrodynamics.md "(H13) from the discrete
+//   equations"), so the area error is the time discretisation's: the
+//   multipliers of a step are those of its start, extrapolated; here the
+//   radial phi_0 (centre jump 0.024) and the membrane 2.8 eps from the
+//   walls relax quickly, so they change fast: |dA/A| < 5e-4 (1.19e-4
+//   measured; the bound of before, with the pointwise f_i, was 2e-3);
 // - the pairing (H24)-(H25): the advection power b(f; u . grad phi), written
 //   out, equals the power of the momentum forcing of the assembled bending
 //   term, (-forcing, u), to round-off;
@@ -104,7 +107,7 @@ main(int argc, char *argv[])
   out << "energy never rises (largest relative rise <= 1e-12): "
       << verdict(worst_rise <= 1e-12) << '\n'
       << "volume error < 1e-5: " << verdict(worst_volume < 1e-5) << '\n'
-      << "area error < 2e-3: " << verdict(worst_area < 2e-3) << '\n'
+      << "area error < 5e-4: " << verdict(worst_area < 5e-4) << '\n'
       << "advection power = forcing power (relative 1e-9): "
       << verdict(std::abs(advection - forcing)
                  <= 1e-9 * std::max(std::abs(advection), 1e-300))

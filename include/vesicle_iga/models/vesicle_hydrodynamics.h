@@ -12,12 +12,16 @@
 #include <vesicle_iga/terms/vesicle_interaction.h>
 #include <vesicle_iga/terms/viscosity_contrast.h>
 
+#include <array>
 #include <functional>
 #include <memory>
 #include <vector>
 
 namespace vesicle_iga
 {
+  template <int dim>
+  class GramSolver;
+
   /// What is measured of one vesicle (spec 4.5, 4.12).
   struct VesicleMeasures
   {
@@ -73,6 +77,7 @@ namespace vesicle_iga
                          dealii::TimerOutput                       &timer,
                          const PhaseFieldBlockParameters &phase_field_blocks
                          = PhaseFieldBlockParameters());
+    ~VesicleHydrodynamics();
 
     unsigned int
     n_vesicles() const
@@ -198,6 +203,12 @@ namespace vesicle_iga
     /// step just taken (0: no relaxation terms, the initial state).
     void
     update_multipliers(const double dt);
+    /// Through the increments' constraints: the residual of every term
+    /// with phase-field rows but the multipliers' at zero rate (R_0), and
+    /// that of the multipliers' term with (lambda_g, lambda_v) = (1, 0)
+    /// and (0, 1) (F_g, F_v); the multipliers' term is left at (0, 1).
+    std::array<dealii::TrilinosWrappers::MPI::Vector, 3>
+    phase_row_residuals() const;
     /// Per vesicle the 12 sums of the geometry integrand about
     /// @p references (A_i and V_i first), then, if asked for, per vesicle
     /// its bending energy (the costly part: Hessians).
@@ -207,6 +218,7 @@ namespace vesicle_iga
 
     const MembraneCoefficients                             membrane;
     const FlowCoefficients<dim>                            flow_coefficients;
+    dealii::TimerOutput                                   &timer;
     const PhaseFieldBlockParameters                        phase_field_blocks;
     const unsigned int                                     n;
     std::vector<std::unique_ptr<PhaseFieldAdvection<dim>>> advection;
@@ -219,7 +231,9 @@ namespace vesicle_iga
     std::vector<std::unique_ptr<TensionLumpedSchur<dim>>>      tension_schur;
     std::vector<std::unique_ptr<PhaseFieldInflow<dim>>>        inflow;
     std::unique_ptr<IncompressibleFlow<dim>>                   flow_model;
-    std::vector<double> area_0, volume_0, lambda_g, lambda_v;
+    /// The projection onto one phase field's space, for (H13).
+    std::unique_ptr<GramSolver<dim>> phase_gram;
+    std::vector<double>              area_0, volume_0, lambda_g, lambda_v;
     /// d lambda / dt over the last accepted step (zero before the first).
     std::vector<double> lambda_g_rate, lambda_v_rate;
     double              last_dt = 0;

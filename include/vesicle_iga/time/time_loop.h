@@ -118,6 +118,13 @@ namespace vesicle_iga
   };
 
 
+  /// The step the loop takes with the controller's @p dt and @p remaining
+  /// time to End time: @p remaining if it is at most dt (to round-off), half
+  /// of it if it is below 2 dt (no sliver of a last step), else dt.
+  double
+  final_step_size(const double dt, const double remaining);
+
+
   /**
    * The one time loop of every time-dependent study (doc/engine.md): step
    * size control (fixed, growing or adaptive, StepSizeController), solve,
