@@ -178,6 +178,40 @@ namespace vesicle_iga
 
   template <int dim>
   double
+  InitialVesicle<dim>::outline_slope() const
+  {
+    // The shape is a body of revolution about the major axis (2D: mirror
+    // symmetric), so one quarter meridian holds every slope.
+    const double c = major_semi_axis(), a = minor_semi_axis();
+    const double step    = 1e-6 * radius;
+    double       largest = 0;
+    for (unsigned int k = 0; k <= 400; ++k)
+      {
+        const double theta = 0.5 * numbers::PI * k / 400;
+        const double rho   = c * a
+                           / std::sqrt(std::pow(a * std::cos(theta), 2)
+                                       + std::pow(c * std::sin(theta), 2));
+        const Point<dim> x = centre
+                             + rho
+                                 * (std::cos(theta) * major_axis()
+                                    + std::sin(theta) * minor_axis(0));
+        double grad2 = 0;
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            Tensor<1, dim> e;
+            e[d] = step;
+            const double g
+              = (signed_distance(x + e) - signed_distance(x - e)) / (2 * step);
+            grad2 += g * g;
+          }
+        largest = std::max(largest, std::sqrt(grad2));
+      }
+    return largest;
+  }
+
+
+  template <int dim>
+  double
   InitialVesicle<dim>::level_set_distance(const Point<dim> &x) const
   {
     // F = (x'_major / c)^2 + sum_k (x'_minor,k / a)^2 - 1 and d = F / |grad

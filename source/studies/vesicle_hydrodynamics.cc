@@ -492,6 +492,17 @@ namespace vesicle_iga
                  "under refinement; 'Initial distance = level-set' is "
                  "smooth."
               << std::endl;
+          // 5 %: the slope enters f_0 as |grad d|^2 - 1 (0.1 there).
+          if (shapes[i].outline_slope() > 1.05)
+            context.pcout
+              << "  Note: the radial distance of (H23) has slope up to "
+              << shapes[i].outline_slope() << " on the outline of " << name
+              << ": phi_0 is steeper there than the equilibrium profile, "
+                 "its bending energy grows like 1 / eps^2 and the area "
+                 "A(0) that (H13) holds is that of the steep profile; "
+                 "'Initial distance = level-set' has unit slope on the "
+                 "outline (doc/hydrodynamics.md, \"Initial distance\")."
+              << std::endl;
           const double gap = shapes[i].wall_gap(lower, upper, mirror);
           const double slope
             = 1

@@ -11,7 +11,10 @@
 //   centre from every direction;
 // - the radial distance of (H23) jumps at the centre: phi_0 just off the
 //   centre along the major axis minus along the minor axis equals
-//   centre_jump() = tanh(c / (sqrt2 eps)) - tanh(a / (sqrt2 eps)).
+//   centre_jump() = tanh(c / (sqrt2 eps)) - tanh(a / (sqrt2 eps));
+// - the radial distance's slope on the outline is sqrt(1 + (rho' /
+//   rho)^2) (outline_slope(), against the polar form), the level-set
+//   distance's 1, in 2D and 3D.
 // Convergence (the solver tests' RestingVesicle: that vesicle at the centre
 // of [-1, 1]^2, 8 to 64 cubic elements per unit, eps = 0.125 fixed):
 // initial bending energy and lambda_g(0), lambda_v(0) of (H13).
@@ -181,6 +184,21 @@ main(int argc, char *argv[])
       << verdict(std::abs(jump - radial.centre_jump(0.125)) < 1e-6)
       << "; a circle: "
       << verdict(InitialVesicle<2>(c2, 0.45, 1, 90).centre_jump(0.125) == 0)
+      << '\n';
+  // The largest sqrt(1 + (rho' / rho)^2) on the outline, from the polar
+  // form of the ellipse (computed apart: 1.25217 for chi = 0.84, gamma_e
+  // 1.41626, and 1.87143 for chi = 0.6, gamma_e 1.8583).
+  const InitialVesicle<2> thin(c2, 0.45, 0.6, 90);
+  out << "outline slope: radial "
+      << verdict(std::abs(radial.outline_slope() - 1.25217) < 1e-4
+                 && std::abs(thin.outline_slope() - 1.87143) < 1e-4)
+      << ", level-set 1 "
+      << verdict(std::abs(ellipse.outline_slope() - 1) < 1e-6
+                 && std::abs(spheroid.outline_slope() - 1) < 1e-6)
+      << ", a circle 1 "
+      << verdict(
+           std::abs(InitialVesicle<2>(c2, 0.45, 1, 90).outline_slope() - 1)
+           < 1e-6)
       << '\n';
 
   const auto grows

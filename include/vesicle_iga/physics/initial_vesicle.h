@@ -100,6 +100,16 @@ namespace vesicle_iga
     /// and minor semi-axes (0 for the level-set distance and for a circle).
     double
     centre_jump(const double eps) const;
+    /// The largest |grad d| on the outline (central differences at 401
+    /// points of a meridian): 1 for the level-set distance, sqrt(1 +
+    /// (rho' / rho)^2) for the radial one (rho(theta) the outline's
+    /// radius; 1.25 for chi = 0.84, 1.87 for chi = 0.6). Above 1, phi_0 is
+    /// steeper there than the equilibrium profile: its bending energy
+    /// grows like 1 / eps^2 at a fixed shape, and the diffuse area A_i(0)
+    /// that (H13) holds is larger than the relaxed membrane's
+    /// (doc/hydrodynamics.md, "Initial distance").
+    double
+    outline_slope() const;
     /// phi_0 of (H23).
     double
     phase_field(const dealii::Point<dim> &x, const double eps) const;
