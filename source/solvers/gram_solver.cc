@@ -65,7 +65,6 @@ namespace vesicle_iga
     SolverControl                           control(1000, 1e-12 * b.l2_norm());
     SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
     cg.solve(mass, y, b, ilu);
-    iterations = control.last_step();
   }
 
 

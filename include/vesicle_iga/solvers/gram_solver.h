@@ -60,18 +60,11 @@ namespace vesicle_iga
     void
     solve(const dealii::TrilinosWrappers::MPI::Vector &b,
           dealii::TrilinosWrappers::MPI::Vector       &y) const;
-    /// CG iterations of the last solve.
-    unsigned int
-    last_iterations() const
-    {
-      return iterations;
-    }
 
   private:
     const SplineDofHandler<dim>               dofs;
     dealii::AffineConstraints<double>         constraints;
     dealii::TrilinosWrappers::SparseMatrix    mass;
     dealii::TrilinosWrappers::PreconditionILU ilu;
-    mutable unsigned int                      iterations = 0;
   };
 } // namespace vesicle_iga
