@@ -2,6 +2,7 @@
 
 #include <deal.II/base/quadrature_lib.h>
 
+#include <vesicle_iga/physics/ellipsoid_distance.h>
 #include <vesicle_iga/physics/initial_vesicle.h>
 
 #include <algorithm>
@@ -159,8 +160,16 @@ namespace vesicle_iga
   double
   InitialVesicle<dim>::signed_distance(const Point<dim> &x) const
   {
-    return distance == DistanceFormula::radial ? radial_distance(x) :
-                                                 level_set_distance(x);
+    switch (distance)
+      {
+        case DistanceFormula::radial:
+          return radial_distance(x);
+        case DistanceFormula::level_set:
+          return level_set_distance(x);
+        case DistanceFormula::exact:
+          return exact_distance(x);
+      }
+    return 0;
   }
 
 
@@ -231,6 +240,26 @@ namespace vesicle_iga
     if (grad2 == 0)
       return -std::numeric_limits<double>::infinity();
     return F / std::sqrt(grad2);
+  }
+
+
+  template <int dim>
+  double
+  InitialVesicle<dim>::exact_distance(const Point<dim> &x) const
+  {
+    // In the axes' coordinates the surface is the ellipsoid with semi-axes
+    // (c, a, a) centred at the origin.
+    const Tensor<1, dim>    r = x - centre;
+    Point<dim>              y;
+    std::array<double, dim> semi_axes;
+    y[0]         = r * major_axis();
+    semi_axes[0] = major_semi_axis();
+    for (unsigned int k = 0; k + 1 < dim; ++k)
+      {
+        y[k + 1]         = r * minor_axis(k);
+        semi_axes[k + 1] = minor_semi_axis();
+      }
+    return signed_distance_to_ellipsoid<dim>(y, semi_axes);
   }
 
 

@@ -270,17 +270,20 @@ namespace vesicle_iga
       const int quadrature             = prm.get_integer("Quadrature points");
       flow_parameters.quadrature_points
         = quadrature > 0 ? quadrature : degree + 2;
-      stretch                        = prm.get("Stretch formula") == "exact" ?
-                                         InitialVesicleBase::StretchFormula::exact :
-                                         InitialVesicleBase::StretchFormula::quadratic_mean;
-      distance                       = prm.get("Initial distance") == "radial" ?
-                                         InitialVesicleBase::DistanceFormula::radial :
-                                         InitialVesicleBase::DistanceFormula::level_set;
-      mirrored_phase                 = prm.get_bool("Mirrored initial phase");
-      initial_velocity               = prm.get("Initial velocity");
-      write_vtu                      = prm.get_bool("Write VTU");
-      write_tension                  = prm.get_bool("Write membrane samples");
-      const std::string vesicle_text = prm.get("Vesicles");
+      stretch                         = prm.get("Stretch formula") == "exact" ?
+                                          InitialVesicleBase::StretchFormula::exact :
+                                          InitialVesicleBase::StretchFormula::quadratic_mean;
+      const std::string distance_name = prm.get("Initial distance");
+      distance                        = distance_name == "radial" ?
+                                          InitialVesicleBase::DistanceFormula::radial :
+                                        distance_name == "level-set" ?
+                                          InitialVesicleBase::DistanceFormula::level_set :
+                                          InitialVesicleBase::DistanceFormula::exact;
+      mirrored_phase                  = prm.get_bool("Mirrored initial phase");
+      initial_velocity                = prm.get("Initial velocity");
+      write_vtu                       = prm.get_bool("Write VTU");
+      write_tension                   = prm.get_bool("Write membrane samples");
+      const std::string vesicle_text  = prm.get("Vesicles");
       boundaries.parse(prm, n_boundaries);
       prm.enter_subsection("Time stepping");
       loop_parameters.parse(prm, prefix + "Time stepping");
@@ -760,7 +763,7 @@ namespace vesicle_iga
         prm.declare_entry(
           "Initial distance",
           "radial",
-          Patterns::Selection("radial|level-set"),
+          Patterns::Selection("radial|level-set|exact"),
           "The signed distance d in phi_0 = tanh(-d / (sqrt2 eps)) of "
           "(H23). radial: the spec's distance along the ray from the "
           "centre; for an ellipse phi_0 jumps at the centre by tanh(c / "
@@ -768,7 +771,12 @@ namespace vesicle_iga
           "negligible once a > 5 eps but not for smaller vesicles, whose "
           "bending energy and multipliers then grow under refinement. "
           "level-set: d = F / |grad F| for the ellipse's quadratic F, with "
-          "the same zero set and unit slope on it, smooth everywhere "
+          "the same zero set and unit slope on it, smooth everywhere, but "
+          "level sets not parallel to it. exact: the true distance to the "
+          "ellipse, unit slope and parallel level sets (the equilibrium "
+          "tanh profile of the outline, so that the held A(0), V(0) are "
+          "those of the relaxed membrane); kinked on the medial axis, "
+          "negligible once the minor semi-axis exceeds about 5 eps "
           "(doc/hydrodynamics.md, \"Initial distance\").");
         prm.declare_entry(
           "Mirrored initial phase",

@@ -74,7 +74,7 @@ namespace vesicle_iga
   }
   /// One vesicle (R_0 = 0.45, chi = 0.84, major axis vertical) at the
   /// centre of [-1, 1]^2 with 2 @p per_unit cubic elements per direction,
-  /// eps = 0.125, fluid at rest, u = 0 strongly on every wall (the solver
+  /// eps = @p epsilon (0.125 unless given), fluid at rest, u = 0 strongly on every wall (the solver
   /// tests' set-up), in its initial state (multipliers of (H13) included).
   struct RestingVesicle
   {
@@ -86,9 +86,10 @@ namespace vesicle_iga
                    const bool zero_normal_derivative = true,
                    const InitialVesicleBase::DistanceFormula distance
                    = InitialVesicleBase::DistanceFormula::radial,
-                   const bool mirrored_phase = false)
+                   const bool   mirrored_phase = false,
+                   const double epsilon        = 0.125)
       : space(cubic_box_knots(2 * per_unit, -1., 1.))
-      , membrane(coefficients(zero_normal_derivative))
+      , membrane(coefficients(zero_normal_derivative, epsilon))
       , model(MPI_COMM_WORLD,
               space,
               membrane,
@@ -108,22 +109,22 @@ namespace vesicle_iga
     {
       model.set_initial_state(
         dealii::Functions::ZeroFunction<2>(2),
-        {[this, mirrored_phase](const dealii::Point<2> &x) {
+        {[this, mirrored_phase, epsilon](const dealii::Point<2> &x) {
           return mirrored_phase ?
                    vesicle.mirrored_phase_field(x,
-                                                0.125,
+                                                epsilon,
                                                 dealii::Point<2>(-1., -1.),
                                                 dealii::Point<2>(1., 1.),
                                                 {{true, true}}) :
-                   vesicle.phase_field(x, 0.125);
+                   vesicle.phase_field(x, epsilon);
         }});
     }
 
     static MembraneCoefficients
-    coefficients(const bool zero_normal_derivative)
+    coefficients(const bool zero_normal_derivative, const double epsilon)
     {
       MembraneCoefficients m;
-      m.epsilon                = 0.125;
+      m.epsilon                = epsilon;
       m.zero_normal_derivative = zero_normal_derivative;
       return m;
     }

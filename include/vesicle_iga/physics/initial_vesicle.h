@@ -35,12 +35,20 @@ namespace vesicle_iga
     ///   (phi_0 -> 1 with all its derivatives). Away from the surface it is
     ///   the distance to first order only: d = (r^2 - R^2) / (2 r) for a
     ///   circle.
-    /// (The true distance is no remedy: its kink on the medial axis gives a
-    /// bending energy growing like 1 / h.)
+    /// - exact: the true signed distance to the ellipse (spheroid), with
+    ///   unit slope and parallel level sets, so that phi_0 is the
+    ///   equilibrium tanh profile of the outline; its kink on the medial
+    ///   axis (the segment between the centres of curvature of the tips)
+    ///   enters phi_0 with the weight sech^2(l / (sqrt2 eps)), l the
+    ///   distance of the axis from the outline, and gives a bending energy
+    ///   that grows like 1 / h once resolved: measured negligible for
+    ///   minor semi-axes of 5 eps and more, not for 2.5 eps
+    ///   (doc/hydrodynamics.md, "Initial distance").
     enum class DistanceFormula
     {
       radial,
-      level_set
+      level_set,
+      exact
     };
 
     /// The perimeter of an ellipse with semi-axes a, b (Gauss-Legendre on
@@ -161,6 +169,8 @@ namespace vesicle_iga
     radial_distance(const dealii::Point<dim> &x) const;
     double
     level_set_distance(const dealii::Point<dim> &x) const;
+    double
+    exact_distance(const dealii::Point<dim> &x) const;
 
     dealii::Point<dim> centre;
     double             radius, gamma, angle;
