@@ -9,8 +9,10 @@
 #include <vesicle_iga/models/vesicle_hydrodynamics.h>
 #include <vesicle_iga/solvers/gram_solver.h>
 #include <vesicle_iga/solvers/vesicle_block_preconditioner.h>
+#include <vesicle_iga/time/generalized_alpha.h>
 
 #include <cmath>
+#include <limits>
 
 namespace vesicle_iga
 {
@@ -254,6 +256,8 @@ namespace vesicle_iga
     , lambda_v(n_vesicles)
     , lambda_g_rate(n_vesicles)
     , lambda_v_rate(n_vesicles)
+    , rho_inf(parameters.time_integration.rho_inf)
+    , bulk_stability(membrane)
   {
     for (unsigned int k = 0; k < dim; ++k)
       if (space.knot_vector(k).is_periodic())
@@ -813,6 +817,31 @@ namespace vesicle_iga
     flow_model->accept_step();
     TimerOutput::Scope scope(timer, "global multipliers");
     update_multipliers(last_dt);
+  }
+
+
+  template <int dim>
+  double
+  VesicleHydrodynamics<dim>::largest_step() const
+  {
+    const GeneralizedAlpha method(rho_inf);
+    // The last accepted step from the stepper (kept in checkpoints, so that
+    // a restart caps the same step).
+    const double ahead   = membrane.extrapolated_multipliers ?
+                             flow_model->get_stepper().previous_step() :
+                             0.;
+    double       largest = std::numeric_limits<double>::infinity();
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        const double lambda
+          = std::min(lambda_g[i], lambda_g[i] + ahead * lambda_g_rate[i]);
+        // Half the singular step: the mode's diagonal alpha_m - alpha_f
+        // gamma dt sigma keeps half of alpha_m.
+        largest = std::min(
+          largest,
+          0.5 * method.singular_step(bulk_stability.growth_rate(lambda)));
+      }
+    return largest;
   }
 
 

@@ -120,6 +120,16 @@ namespace vesicle_iga
 
 
   bool
+  StepSizeController::limit(const double largest)
+  {
+    if (!(largest < current_dt))
+      return false;
+    current_dt = std::max(largest, prm.min_dt);
+    return true;
+  }
+
+
+  bool
   StepSizeController::reject_failure()
   {
     steps_since_cut = 0;

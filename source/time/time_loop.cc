@@ -201,6 +201,18 @@ namespace vesicle_iga
     for (;;)
       {
         const double t = problem.time();
+        // A step past the problem's stability limit meets a singular step
+        // matrix (a NaN from the preconditioner, a diverging Newton) and
+        // would be cut only after failing.
+        if (controller.limit(problem.largest_step()) && !limit_noted)
+          {
+            limit_noted = true;
+            context.pcout << "  Note: dt cut to " << controller.dt()
+                          << " at t = " << t
+                          << " by the problem's stability limit (printed "
+                             "once)."
+                          << std::endl;
+          }
         const double dt
           = final_step_size(controller.dt(), parameters.end_time - t);
         StepReport report;

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <vesicle_iga/models/incompressible_flow.h>
+#include <vesicle_iga/physics/bulk_stability.h>
 #include <vesicle_iga/physics/hydrodynamic_membrane.h>
 #include <vesicle_iga/solvers/vesicle_block_preconditioner.h>
 #include <vesicle_iga/terms/global_constraint_forcing.h>
@@ -188,6 +189,12 @@ namespace vesicle_iga
     local_error(const double atol, const double rtol) const override;
     void
     accept_step() override;
+    /// Half the step at which the step matrix of the fastest growing bulk
+    /// mode turns singular (BulkStability), for the most negative lambda_g
+    /// the next step may use (its value, or extrapolated over a step like
+    /// the last); infinity while every bulk is stable.
+    double
+    largest_step() const override;
 
     // Checkpointable
     void
@@ -237,6 +244,9 @@ namespace vesicle_iga
     /// d lambda / dt over the last accepted step (zero before the first).
     std::vector<double> lambda_g_rate, lambda_v_rate;
     double              last_dt = 0;
+    /// rho_inf of the generalized-alpha steps, for largest_step().
+    const double        rho_inf;
+    const BulkStability bulk_stability;
     PeriodicBox         periodic_box;
     /// Per locally owned unknown: whether it is a phase field.
     std::vector<bool> phase_entries;

@@ -11,6 +11,7 @@
 #include <vesicle_iga/solvers/newton.h>
 
 #include <functional>
+#include <limits>
 #include <vector>
 
 namespace vesicle_iga
@@ -28,6 +29,16 @@ namespace vesicle_iga
       , alpha_f(1 / (1 + rho_inf))
       , gamma(0.5 + alpha_m - alpha_f)
     {}
+    /// The step size at which the step matrix alpha_m M + alpha_f gamma dt
+    /// K of a mode growing at @p growth_rate (K = -sigma M) turns singular:
+    /// alpha_m / (alpha_f gamma sigma); infinity for a mode that does not
+    /// grow (the method is unconditionally stable for those).
+    double
+    singular_step(const double growth_rate) const
+    {
+      return growth_rate > 0 ? alpha_m / (alpha_f * gamma * growth_rate) :
+                               std::numeric_limits<double>::infinity();
+    }
     double rho_inf, alpha_m, alpha_f, gamma;
   };
 

@@ -65,6 +65,10 @@ namespace vesicle_iga
     /// < 0: no estimate) accepts it; sets the next dt either way.
     bool
     accept(const double error);
+    /// Caps the next dt at @p largest (not below Min dt); returns whether
+    /// the cap cut it.
+    bool
+    limit(const double largest);
     /// Failure: reject and cut dt. Returns false when dt would fall below
     /// the minimum (the run cannot continue).
     bool

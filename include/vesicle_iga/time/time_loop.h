@@ -9,6 +9,7 @@
 #include <vesicle_iga/time/step_size_controller.h>
 
 #include <functional>
+#include <limits>
 #include <memory>
 #include <ostream>
 #include <string>
@@ -70,6 +71,14 @@ namespace vesicle_iga
     virtual void
     accept_step()
       = 0;
+    /// The longest step the problem can take from time() before its step
+    /// matrix turns singular by a linear instability it knows of (infinity:
+    /// none); the loop takes no longer step.
+    virtual double
+    largest_step() const
+    {
+      return std::numeric_limits<double>::infinity();
+    }
     /// The solved step was rejected (the state is still that of time()).
     virtual void
     reject_step()
@@ -238,9 +247,12 @@ namespace vesicle_iga
     std::vector<Monitor *>                                monitors;
     std::vector<StationarityCriterion *>                  criteria;
     std::function<void(unsigned int)>                     output;
-    std::string  series_name = "time-series.csv";
-    bool         checkpoints = true, restarted = false, stationary = false;
-    unsigned int step_number = 0, rejected = 0;
+    std::string series_name = "time-series.csv";
+    bool        checkpoints = true, restarted = false, stationary = false;
+    /// Whether the note on a step cut by TimeDependentProblem::largest_step
+    /// has been printed (once per run).
+    bool                              limit_noted = false;
+    unsigned int                      step_number = 0, rejected = 0;
     std::unique_ptr<TimeSeriesWriter> series;
   };
 } // namespace vesicle_iga
