@@ -5,9 +5,11 @@
 #include <deal.II/base/function.h>
 
 #include <vesicle_iga/base/input_error.h>
+#include <vesicle_iga/base/solver_failure.h>
 #include <vesicle_iga/fields/dirichlet_constraints.h>
 #include <vesicle_iga/models/vesicle_hydrodynamics.h>
 #include <vesicle_iga/solvers/gram_solver.h>
+#include <vesicle_iga/solvers/multiplier_secant.h>
 #include <vesicle_iga/solvers/vesicle_block_preconditioner.h>
 #include <vesicle_iga/time/generalized_alpha.h>
 
@@ -555,8 +557,9 @@ namespace vesicle_iga
   template <int dim>
   std::vector<double>
   VesicleHydrodynamics<dim>::integrate_geometry(
-    const std::vector<Point<dim>> &references,
-    const bool                     with_bending_energy) const
+    const std::vector<Point<dim>>       &references,
+    const bool                           with_bending_energy,
+    const TrilinosWrappers::MPI::Vector *fields) const
   {
     std::vector<std::unique_ptr<Integrand<dim>>> owned;
     for (unsigned int i = 0; i < n; ++i)
@@ -569,7 +572,7 @@ namespace vesicle_iga
     for (auto &o : owned)
       list.push_back(o.get());
     AssemblyState state;
-    state.value = &flow_model->solution();
+    state.value = fields ? fields : &flow_model->solution();
     return flow_model->get_assembler().integrate(list, state);
   }
 
@@ -680,8 +683,8 @@ namespace vesicle_iga
 
 
   template <int dim>
-  void
-  VesicleHydrodynamics<dim>::update_multipliers(const double dt)
+  std::vector<std::array<double, 6>>
+  VesicleHydrodynamics<dim>::rate_laws(const double dt) const
   {
     // (H13) from the discrete equations themselves. On the rows of phi_i,
     // tested with the basis psi_j of the space with its strong conditions,
@@ -695,7 +698,8 @@ namespace vesicle_iga
     // the area law is off by the projection error of f_i, a constant drift
     // that the relaxation turns into an area error of order dt
     // (doc/hydrodynamics.md, "Global multipliers in time").
-    const auto residuals = phase_row_residuals();
+    const auto                         residuals = phase_row_residuals();
+    std::vector<std::array<double, 6>> laws(n);
     std::vector<std::unique_ptr<Integrand<dim>>> owned;
     std::vector<Integrand<dim> *>                list;
     for (unsigned int i = 0; i < n; ++i)
@@ -750,8 +754,22 @@ namespace vesicle_iga
             b_v -= eta * (volume_0[i] - volume) / (2 * dt);
             b_g -= eta * eta * (area_0[i] - area) / (2 * dt);
           }
-        const double a_vv = sums[2], a_vg = sums[1];
-        const double a_gv = sums[5], a_gg = sums[4];
+        laws[i] = {{sums[2], sums[1], sums[5], sums[4], b_v, b_g}};
+      }
+    return laws;
+  }
+
+
+  template <int dim>
+  void
+  VesicleHydrodynamics<dim>::update_multipliers(const double dt)
+  {
+    const auto laws = rate_laws(dt);
+    rate_matrices.resize(n);
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        const auto [a_vv, a_vg, a_gv, a_gg, b_v, b_g] = laws[i];
+        rate_matrices[i] = {{a_vv, a_vg, a_gv, a_gg}};
         // With beta = 1 (Volume multiplier = domain) and the pointwise f
         // this was the Gram determinant |Omega| int f^2 - (int f)^2 of spec
         // 4.6. With the membrane weight beta = delta_eps it is not a Gram
@@ -800,13 +818,114 @@ namespace vesicle_iga
     // a step with them lags them by dt, which leaves an area error of
     // order dt per step (relaxed only at eta_phi / 2 per step).
     // Extrapolated to t_{n+1} by their rate over the last step, the lag is
-    // of order dt^2.
+    // of order dt^2. Implicit multipliers start from the last step's
+    // values: extrapolating those (each the step's own average) amplified
+    // their step-to-step changes in the first steps of a shear start
+    // (doc/hydrodynamics.md, "Implicit global multipliers").
     const double ahead = membrane.extrapolated_multipliers ? dt : 0.;
+    step_lambda_g.resize(n);
+    step_lambda_v.resize(n);
     for (unsigned int i = 0; i < n; ++i)
-      constraint[i]->get_formula().set_multipliers(
-        lambda_g[i] + ahead * lambda_g_rate[i],
-        lambda_v[i] + ahead * lambda_v_rate[i]);
+      {
+        step_lambda_g[i] = lambda_g[i] + ahead * lambda_g_rate[i];
+        step_lambda_v[i] = lambda_v[i] + ahead * lambda_v_rate[i];
+        constraint[i]->get_formula().set_multipliers(step_lambda_g[i],
+                                                     step_lambda_v[i]);
+      }
+    if (membrane.implicit_multipliers)
+      return implicit_step(dt);
     return flow_model->solve_step(dt);
+  }
+
+
+  template <int dim>
+  StepReport
+  VesicleHydrodynamics<dim>::implicit_step(const double dt)
+  {
+    // (H7) at the end of the step instead of the rate laws of (H13): G_i =
+    // (V_i, A_i)(phi_{n+1}) - (V_i(0), A_i(0)) = 0 (relative to |V_i(0)|,
+    // A_i(0): V_i = int phi_i is negative in a box larger than twice the
+    // vesicle) for (lambda_v, lambda_g) of the step, by a secant iteration
+    // started from the rate laws' response dt d(dV/dt, dA/dt)/d(lambda_v,
+    // lambda_g) (the rows of (H13): dV/dt = -(... + lambda_v F_v + lambda_g
+    // F_g)(1), eta_phi dA/dt the same at Y).
+    const double                  eta = membrane.mobility;
+    std::vector<SecantIteration2> secant;
+    // The last step's secant estimate, scaled to this step (the response
+    // is about proportional to dt while the rate term dominates the step
+    // matrix), is closer than the rate laws' once a step has been taken.
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        const auto           &a = rate_matrices[i];
+        std::array<double, 4> J{
+          {-dt * a[0], -dt * a[1], -dt * a[2] / eta, -dt * a[3] / eta}};
+        if (step_response.size() == n)
+          for (unsigned int k = 0; k < 4; ++k)
+            J[k] = dt * step_response[i][k];
+        secant.emplace_back(
+          std::array<double, 2>{{step_lambda_v[i], step_lambda_g[i]}}, J);
+      }
+    const auto &dofs = flow_model->dofs();
+    StepReport  report;
+    for (unsigned int iteration = 1;; ++iteration)
+      {
+        const StepReport r = flow_model->solve_step(dt);
+        report.newton_iterations += r.newton_iterations;
+        report.krylov_iterations += r.krylov_iterations;
+        TrilinosWrappers::MPI::Vector trial(dofs.locally_owned_dofs(),
+                                            dofs.locally_relevant_dofs(),
+                                            dofs.get_mesh().get_communicator());
+        trial = flow_model->get_stepper().next_solution();
+        const auto geometry
+          = integrate_geometry(std::vector<Point<dim>>(n), false, &trial);
+        double worst     = 0;
+        auto   residuals = std::vector<std::array<double, 2>>(n);
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            const double area = geometry[VesicleGeometry<dim>::n_sums * i];
+            const double volume
+              = geometry[VesicleGeometry<dim>::n_sums * i + 1];
+            residuals[i] = {{volume - volume_0[i], area - area_0[i]}};
+            worst        = std::max({worst,
+                                     std::abs(residuals[i][0] / volume_0[i]),
+                                     std::abs(residuals[i][1] / area_0[i])});
+          }
+        if (worst <= membrane.multiplier_tolerance)
+          {
+            solved_step_response.resize(n);
+            for (unsigned int i = 0; i < n; ++i)
+              for (unsigned int k = 0; k < 4; ++k)
+                solved_step_response[i][k] = secant[i].jacobian()[k] / dt;
+            report.counters = {double(iteration)};
+            return report;
+          }
+        if (iteration >= membrane.max_multiplier_iterations)
+          throw SolverFailure(
+            "the implicit global multipliers did not hold V_i(0), A_i(0) "
+            "to 'Multiplier tolerance' = "
+            + std::to_string(membrane.multiplier_tolerance) + " in "
+            + std::to_string(iteration)
+            + " iterations ('Multiplier iterations'); relative error "
+            + std::to_string(worst));
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            const auto &x    = secant[i].next(residuals[i]);
+            step_lambda_v[i] = x[0];
+            step_lambda_g[i] = x[1];
+            constraint[i]->get_formula().set_multipliers(step_lambda_g[i],
+                                                         step_lambda_v[i]);
+          }
+      }
+  }
+
+
+  template <int dim>
+  std::vector<std::pair<std::string, std::string>>
+  VesicleHydrodynamics<dim>::step_columns() const
+  {
+    if (!membrane.implicit_multipliers)
+      return {};
+    return {{"multiplier_iterations", "multiplier_its"}};
   }
 
 
@@ -816,7 +935,24 @@ namespace vesicle_iga
   {
     flow_model->accept_step();
     TimerOutput::Scope scope(timer, "global multipliers");
-    update_multipliers(last_dt);
+    if (!membrane.implicit_multipliers)
+      {
+        update_multipliers(last_dt);
+        return;
+      }
+    // The multipliers of the step just taken and their rate over it (the
+    // next step's first iterate); the rate laws at the new state for the
+    // secant iteration's first estimate.
+    const auto laws = rate_laws(0);
+    step_response   = solved_step_response;
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        rate_matrices[i] = {{laws[i][0], laws[i][1], laws[i][2], laws[i][3]}};
+        lambda_g_rate[i] = (step_lambda_g[i] - lambda_g[i]) / last_dt;
+        lambda_v_rate[i] = (step_lambda_v[i] - lambda_v[i]) / last_dt;
+        lambda_g[i]      = step_lambda_g[i];
+        lambda_v[i]      = step_lambda_v[i];
+      }
   }
 
 
@@ -827,10 +963,11 @@ namespace vesicle_iga
     const GeneralizedAlpha method(rho_inf);
     // The last accepted step from the stepper (kept in checkpoints, so that
     // a restart caps the same step).
-    const double ahead   = membrane.extrapolated_multipliers ?
-                             flow_model->get_stepper().previous_step() :
-                             0.;
-    double       largest = std::numeric_limits<double>::infinity();
+    const double ahead
+      = membrane.extrapolated_multipliers || membrane.implicit_multipliers ?
+          flow_model->get_stepper().previous_step() :
+          0.;
+    double largest = std::numeric_limits<double>::infinity();
     for (unsigned int i = 0; i < n; ++i)
       {
         const double lambda
@@ -857,6 +994,14 @@ namespace vesicle_iga
     c.vectors[prefix + ".volume_multipliers"]      = lambda_v;
     c.vectors[prefix + ".area_multiplier_rates"]   = lambda_g_rate;
     c.vectors[prefix + ".volume_multiplier_rates"] = lambda_v_rate;
+    // Implicit multipliers only (an empty vector is no HDF5 data set).
+    if (!step_response.empty())
+      {
+        std::vector<double> response;
+        for (const auto &J : step_response)
+          response.insert(response.end(), J.begin(), J.end());
+        c.vectors[prefix + ".multiplier_step_response"] = response;
+      }
   }
 
 
@@ -898,6 +1043,22 @@ namespace vesicle_iga
       }
     for (unsigned int i = 0; i < n; ++i)
       constraint[i]->get_formula().set_multipliers(lambda_g[i], lambda_v[i]);
+    step_response.clear();
+    if (c.vectors.count(prefix + ".multiplier_step_response"))
+      {
+        const auto &stored = c.vector(prefix + ".multiplier_step_response");
+        for (unsigned int i = 0; 4 * i + 3 < stored.size(); ++i)
+          step_response.push_back({{stored[4 * i],
+                                    stored[4 * i + 1],
+                                    stored[4 * i + 2],
+                                    stored[4 * i + 3]}});
+      }
+    // The rate laws of the loaded state (the implicit multipliers' first
+    // estimate), as the uninterrupted run has them.
+    const auto laws = rate_laws(0);
+    rate_matrices.resize(n);
+    for (unsigned int i = 0; i < n; ++i)
+      rate_matrices[i] = {{laws[i][0], laws[i][1], laws[i][2], laws[i][3]}};
   }
 
   template class VesicleHydrodynamics<2>;

@@ -257,6 +257,11 @@ namespace vesicle_iga
         = prm.get("Volume multiplier") == "membrane";
       membrane.extrapolated_multipliers
         = prm.get("Global multipliers") == "extrapolated";
+      membrane.implicit_multipliers
+        = prm.get("Global multipliers") == "implicit";
+      membrane.multiplier_tolerance = prm.get_double("Multiplier tolerance");
+      membrane.max_multiplier_iterations
+        = prm.get_integer("Multiplier iterations");
       membrane.zero_normal_derivative
         = prm.get("Phase field boundary condition") == "zero normal derivative";
       membrane.mobility           = prm.get_double("Mobility");
@@ -690,7 +695,7 @@ namespace vesicle_iga
         prm.declare_entry(
           "Global multipliers",
           "extrapolated",
-          Patterns::Selection("extrapolated|lagged"),
+          Patterns::Selection("extrapolated|lagged|implicit"),
           "The values of lambda_g,i and lambda_v,i a step uses. (H13) "
           "gives them from the state at the start of the step. lagged: "
           "those values (the source); the constraint drift then grows by "
@@ -698,7 +703,23 @@ namespace vesicle_iga
           "extrapolated: those values plus dt times their rate over the "
           "last accepted step (the multipliers at the end of the step); on "
           "prm/doublet-shear-quick.prm the area error after 30 steps falls "
-          "from 0.77 % to 0.11 % (doc/hydrodynamics.md).");
+          "from 0.77 % to 0.11 % (doc/hydrodynamics.md). implicit (not in "
+          "the source): the step is solved again with its multipliers "
+          "iterated (secant, from the extrapolated values) until it ends on "
+          "V_i(0), A_i(0) to 'Multiplier tolerance': no drift and no "
+          "relaxation, at about 2-3 solves per step (doc/hydrodynamics.md, "
+          "\"Implicit global multipliers\").");
+        prm.declare_entry("Multiplier tolerance",
+                          "1e-5",
+                          Patterns::Double(0),
+                          "Global multipliers = implicit: the largest relative "
+                          "error of V_i, A_i at the end of a step.");
+        prm.declare_entry("Multiplier iterations",
+                          "8",
+                          Patterns::Integer(1),
+                          "Global multipliers = implicit: solves of a step "
+                          "before it counts as failed (and is retried at dt / "
+                          "4).");
         prm.declare_entry(
           "Volume multiplier",
           "membrane",

@@ -179,6 +179,10 @@ namespace vesicle_iga
     {
       return flow_model->time();
     }
+    /// With implicit multipliers: the number of multiplier iterations of
+    /// the step.
+    std::vector<std::pair<std::string, std::string>>
+    step_columns() const override;
     StepReport
     solve_step(const double dt) override;
     /// The estimate (N5) on the phase fields only: the velocity, pressure
@@ -210,6 +214,15 @@ namespace vesicle_iga
     /// step just taken (0: no relaxation terms, the initial state).
     void
     update_multipliers(const double dt);
+    /// (H13) of every vesicle as [F_v(1) F_g(1); F_v(Y) F_g(Y)] (lambda_v,
+    /// lambda_g) = b (row-major matrix, then b) from the current fields;
+    /// @p dt: the step just taken (0: no relaxation terms).
+    std::vector<std::array<double, 6>>
+    rate_laws(const double dt) const;
+    /// The step solved again with the global multipliers iterated until it
+    /// ends on V_i(0), A_i(0) (implicit multipliers).
+    StepReport
+    implicit_step(const double dt);
     /// Through the increments' constraints: the residual of every term
     /// with phase-field rows but the multipliers' at zero rate (R_0), and
     /// that of the multipliers' term with (lambda_g, lambda_v) = (1, 0)
@@ -221,7 +234,9 @@ namespace vesicle_iga
     /// its bending energy (the costly part: Hessians).
     std::vector<double>
     integrate_geometry(const std::vector<dealii::Point<dim>> &references,
-                       const bool with_bending_energy) const;
+                       const bool with_bending_energy,
+                       const dealii::TrilinosWrappers::MPI::Vector *fields
+                       = nullptr) const;
 
     const MembraneCoefficients                             membrane;
     const FlowCoefficients<dim>                            flow_coefficients;
@@ -243,7 +258,17 @@ namespace vesicle_iga
     std::vector<double>              area_0, volume_0, lambda_g, lambda_v;
     /// d lambda / dt over the last accepted step (zero before the first).
     std::vector<double> lambda_g_rate, lambda_v_rate;
-    double              last_dt = 0;
+    /// The rate laws' matrices of the last accepted state (implicit
+    /// multipliers: their first estimate of the step's response), and the
+    /// multipliers the last solved step used.
+    std::vector<std::array<double, 4>> rate_matrices;
+    std::vector<double>                step_lambda_g, step_lambda_v;
+    /// Implicit multipliers: per vesicle the secant estimate of d(V, A) /
+    /// d(lambda_v, lambda_g) per unit step of the last accepted step (the
+    /// next step's first estimate, times its dt; empty: none yet, the rate
+    /// laws give it), and that of the step last solved.
+    std::vector<std::array<double, 4>> step_response, solved_step_response;
+    double                             last_dt = 0;
     /// rho_inf of the generalized-alpha steps, for largest_step().
     const double        rho_inf;
     const BulkStability bulk_stability;

@@ -37,6 +37,14 @@ namespace vesicle_iga
     /// values themselves, lagged by a step as in the source
     /// (doc/hydrodynamics.md, "Global multipliers in time").
     bool extrapolated_multipliers = true;
+    /// Whether a step iterates its global multipliers until it ends on
+    /// V_i(0), A_i(0) (H7) (not in the source; the step is solved about 2-3
+    /// times), to the relative tolerance given, in at most the number of
+    /// iterations given (doc/hydrodynamics.md, "Implicit global
+    /// multipliers"). The first iterate is the extrapolated one.
+    bool         implicit_multipliers      = false;
+    double       multiplier_tolerance      = 1e-5;
+    unsigned int max_multiplier_iterations = 8;
     /// Boundary condition of the phase fields: true (default) the source's
     /// d phi_i / dn = 0 of spec 4.10, strongly; together with (H24) it
     /// leaves d f_i / dn = 0 natural, the source's pair. false: natural
