@@ -849,7 +849,13 @@ namespace vesicle_iga
     // started from the rate laws' response dt d(dV/dt, dA/dt)/d(lambda_v,
     // lambda_g) (the rows of (H13): dV/dt = -(... + lambda_v F_v + lambda_g
     // F_g)(1), eta_phi dA/dt the same at Y).
-    const double                  eta = membrane.mobility;
+    const double eta = membrane.mobility;
+    if (rate_matrices.size() != n) // a state set without (H13)
+      {
+        rate_matrices.clear();
+        for (const auto &law : rate_laws(0))
+          rate_matrices.push_back({{law[0], law[1], law[2], law[3]}});
+      }
     std::vector<SecantIteration2> secant;
     // The last step's secant estimate, scaled to this step (the response
     // is about proportional to dt while the rate term dominates the step
