@@ -231,6 +231,61 @@ namespace vesicle_iga
     };
 
 
+    /// The entries of 'Vesicles' (@p text: per vesicle the centre, R_0,
+    /// the reduced area or volume and the angle, vesicles separated by
+    /// ';'), each checked, with errors naming the parameter (@p prefix its
+    /// section) and the vesicle.
+    template <int dim>
+    std::vector<VesicleEntry<dim>>
+    parse_vesicle_entries(const std::string &text_list,
+                          const std::string &prefix)
+    {
+      std::vector<VesicleEntry<dim>> entries;
+      for (const auto &text : Utilities::split_string_list(text_list, ';'))
+        {
+          const auto          parts = Utilities::split_string_list(text, ',');
+          std::vector<double> v;
+          try
+            {
+              for (const auto &p : parts)
+                {
+                  std::size_t used = 0;
+                  v.push_back(std::stod(p, &used));
+                  if (used != p.size() || !std::isfinite(v.back()))
+                    v.clear();
+                }
+            }
+          catch (...)
+            {
+              v.clear();
+            }
+          check_input(v.size() == dim + 3,
+                      prefix + "Vesicles",
+                      text,
+                      vesicle_format(dim)
+                        + " per vesicle (finite numbers; vesicles separated "
+                          "by ';')");
+          const std::string which
+            = " (vesicle " + std::to_string(entries.size() + 1) + ")";
+          check_input(v[dim] > 0, prefix + "Vesicles", text, "R_0 > 0" + which);
+          check_input(v[dim + 1] > 0 && v[dim + 1] <= 1,
+                      prefix + "Vesicles",
+                      text,
+                      std::string(dim == 2 ? "reduced area chi" :
+                                             "reduced volume v")
+                        + " in (0, 1]" + which);
+          VesicleEntry<dim> entry;
+          for (unsigned int d = 0; d < dim; ++d)
+            entry.centre[d] = v[d];
+          entry.radius  = v[dim];
+          entry.reduced = v[dim + 1];
+          entry.angle   = v[dim + 2];
+          entries.push_back(entry);
+        }
+      return entries;
+    }
+
+
     template <int dim>
     VesicleHydrodynamicsStudy<dim>::VesicleHydrodynamicsStudy(
       ParameterHandler &prm,
@@ -321,47 +376,7 @@ namespace vesicle_iga
                   std::to_string(continuity),
                   "-1 (C^{p-1}) or >= 2: (H24)-(H25) need phi_i in H^2 with "
                   "continuous second derivatives (spec 4.13)");
-      for (const auto &text : Utilities::split_string_list(vesicle_text, ';'))
-        {
-          const auto          parts = Utilities::split_string_list(text, ',');
-          std::vector<double> v;
-          try
-            {
-              for (const auto &p : parts)
-                {
-                  std::size_t used = 0;
-                  v.push_back(std::stod(p, &used));
-                  if (used != p.size() || !std::isfinite(v.back()))
-                    v.clear();
-                }
-            }
-          catch (...)
-            {
-              v.clear();
-            }
-          check_input(v.size() == dim + 3,
-                      prefix + "Vesicles",
-                      text,
-                      vesicle_format(dim)
-                        + " per vesicle (finite numbers; vesicles separated "
-                          "by ';')");
-          const std::string which
-            = " (vesicle " + std::to_string(vesicles.size() + 1) + ")";
-          check_input(v[dim] > 0, prefix + "Vesicles", text, "R_0 > 0" + which);
-          check_input(v[dim + 1] > 0 && v[dim + 1] <= 1,
-                      prefix + "Vesicles",
-                      text,
-                      std::string(dim == 2 ? "reduced area chi" :
-                                             "reduced volume v")
-                        + " in (0, 1]" + which);
-          VesicleEntry<dim> entry;
-          for (unsigned int d = 0; d < dim; ++d)
-            entry.centre[d] = v[d];
-          entry.radius  = v[dim];
-          entry.reduced = v[dim + 1];
-          entry.angle   = v[dim + 2];
-          vesicles.push_back(entry);
-        }
+      vesicles = parse_vesicle_entries<dim>(vesicle_text, prefix);
       check_input(!vesicles.empty(),
                   prefix + "Vesicles",
                   vesicle_text,

@@ -93,10 +93,9 @@ int
 main(int argc, char *argv[])
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const bool                               root
-    = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
-  std::ofstream out(root ? "output" : "/dev/null");
-  const auto    verdict = [](const bool ok) { return ok ? "ok" : "FAILED"; };
+  const bool                               root = is_root_rank();
+  std::ofstream                            out  = root_output_file();
+  const auto verdict = [](const bool ok) { return ok ? "ok" : "FAILED"; };
 
   const std::string close = "    set Checkpoint interval = 0\n  end\nend\n";
   const int         a     = run_study_quietly(set_up("extrapolated") + close
