@@ -19,18 +19,7 @@
 #include <string>
 #include <vector>
 
-/// Whether this is rank 0, and the test's "output" there (a sink on the
-/// other ranks).
-inline bool
-is_root_rank()
-{
-  return dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
-}
-inline std::ofstream
-root_output_file()
-{
-  return std::ofstream(is_root_rank() ? "output" : "/dev/null");
-}
+#include "root_output.h"
 
 struct StudyRun
 {

@@ -93,8 +93,8 @@ int
 main(int argc, char *argv[])
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const bool                               root = is_root_rank();
-  std::ofstream                            out  = root_output_file();
+  const bool                               root = root_rank();
+  std::ofstream                            out  = root_output();
   const auto verdict = [](const bool ok) { return ok ? "ok" : "FAILED"; };
 
   const std::string close = "    set Checkpoint interval = 0\n  end\nend\n";

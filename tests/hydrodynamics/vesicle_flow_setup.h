@@ -17,22 +17,10 @@
 #include <memory>
 #include <vector>
 
+#include "../root_output.h"
+
 namespace vesicle_iga
 {
-  /// Whether this is rank 0, which writes the test's output.
-  inline bool
-  root_rank()
-  {
-    return dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
-  }
-
-  /// The test's "output" on rank 0, a sink on the others.
-  inline std::ofstream
-  root_output()
-  {
-    return std::ofstream(root_rank() ? "output" : "/dev/null");
-  }
-
   /// Cubic C^2 knot vectors of [x_0, x_1] x [y_0, y_1] with n_x x n_y
   /// uniform elements.
   inline std::array<KnotVector, 2>
