@@ -672,12 +672,22 @@ namespace vesicle_iga
                               flow_model->get_assembler().get_quadrature());
     for (auto &term : constraint)
       rows.add_term(*term);
+    // The terms are the step's: their multipliers are put back, so that
+    // computing the rate laws leaves no state behind (a restart computes
+    // them where the uninterrupted run may not).
+    std::vector<std::array<double, 2>> multipliers;
+    for (const auto &term : constraint)
+      multipliers.push_back({{term->get_formula().area_multiplier(),
+                              term->get_formula().volume_multiplier()}});
     for (unsigned int k = 1; k < 3; ++k)
       {
         for (auto &term : constraint)
           term->get_formula().set_multipliers(k == 1, k == 2);
         rows.assemble(state, increments, &r[k], nullptr);
       }
+    for (unsigned int i = 0; i < constraint.size(); ++i)
+      constraint[i]->get_formula().set_multipliers(multipliers[i][0],
+                                                   multipliers[i][1]);
     return r;
   }
 
@@ -850,7 +860,10 @@ namespace vesicle_iga
     // lambda_g) (the rows of (H13): dV/dt = -(... + lambda_v F_v + lambda_g
     // F_g)(1), eta_phi dA/dt the same at Y).
     const double eta = membrane.mobility;
-    if (rate_matrices.size() != n) // a state set without (H13)
+    // The rate laws at the state: needed before a first step has given a
+    // secant estimate (also after a restart from a state set without
+    // (H13)).
+    if (step_response.size() != n && rate_matrices.size() != n)
       {
         rate_matrices.clear();
         for (const auto &law : rate_laws(0))
@@ -862,12 +875,15 @@ namespace vesicle_iga
     // matrix), is closer than the rate laws' once a step has been taken.
     for (unsigned int i = 0; i < n; ++i)
       {
-        const auto           &a = rate_matrices[i];
-        std::array<double, 4> J{
-          {-dt * a[0], -dt * a[1], -dt * a[2] / eta, -dt * a[3] / eta}};
+        std::array<double, 4> J;
         if (step_response.size() == n)
           for (unsigned int k = 0; k < 4; ++k)
             J[k] = dt * step_response[i][k];
+        else
+          {
+            const auto &a = rate_matrices[i];
+            J = {{-dt * a[0], -dt * a[1], -dt * a[2] / eta, -dt * a[3] / eta}};
+          }
         secant.emplace_back(
           std::array<double, 2>{{step_lambda_v[i], step_lambda_g[i]}}, J);
       }
@@ -947,13 +963,12 @@ namespace vesicle_iga
         return;
       }
     // The multipliers of the step just taken and their rate over it (the
-    // next step's first iterate); the rate laws at the new state for the
-    // secant iteration's first estimate.
-    const auto laws = rate_laws(0);
-    step_response   = solved_step_response;
+    // next step's first iterate), and the step's secant estimate of their
+    // response (the next step's first Jacobian; the rate laws are needed
+    // only before a first step).
+    step_response = solved_step_response;
     for (unsigned int i = 0; i < n; ++i)
       {
-        rate_matrices[i] = {{laws[i][0], laws[i][1], laws[i][2], laws[i][3]}};
         lambda_g_rate[i] = (step_lambda_g[i] - lambda_g[i]) / last_dt;
         lambda_v_rate[i] = (step_lambda_v[i] - lambda_v[i]) / last_dt;
         lambda_g[i]      = step_lambda_g[i];
@@ -1059,12 +1074,9 @@ namespace vesicle_iga
                                     stored[4 * i + 2],
                                     stored[4 * i + 3]}});
       }
-    // The rate laws of the loaded state (the implicit multipliers' first
-    // estimate), as the uninterrupted run has them.
-    const auto laws = rate_laws(0);
-    rate_matrices.resize(n);
-    for (unsigned int i = 0; i < n; ++i)
-      rate_matrices[i] = {{laws[i][0], laws[i][1], laws[i][2], laws[i][3]}};
+    // The rate laws are computed by the first implicit step if it needs
+    // them (no step response in the checkpoint).
+    rate_matrices.clear();
   }
 
   template class VesicleHydrodynamics<2>;

@@ -52,6 +52,16 @@ namespace vesicle_iga
       lambda_g = area;
       lambda_v = volume;
     }
+    double
+    area_multiplier() const
+    {
+      return lambda_g;
+    }
+    double
+    volume_multiplier() const
+    {
+      return lambda_v;
+    }
     template <typename T>
     void
     residual(const T *in, T *out) const
