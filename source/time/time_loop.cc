@@ -36,7 +36,9 @@ namespace vesicle_iga
     prm.declare_entry("Max steps",
                       "100000",
                       Patterns::Integer(1),
-                      "Upper bound on accepted steps.");
+                      "Upper bound on the number of the last accepted "
+                      "step, counted from the start of the run (a restart "
+                      "continues the count of its checkpoint).");
     StepSizeController::Parameters::declare(prm,
                                             d.step_control,
                                             d.initial_dt,
@@ -371,6 +373,14 @@ namespace vesicle_iga
       }
     if (checkpoints)
       write_checkpoint();
+    if (step_number >= parameters.max_steps
+        && problem.time() < parameters.end_time * (1 - 1e-12))
+      context.pcout << "stopped at step " << step_number
+                    << " by 'Max steps' = " << parameters.max_steps
+                    << " (counted from the start of the run), at t = "
+                    << problem.time()
+                    << " before 'End time' = " << parameters.end_time
+                    << std::endl;
     if (!stationary)
       for (const auto *c : criteria)
         {
