@@ -258,6 +258,8 @@ namespace vesicle_iga
     , lambda_v(n_vesicles)
     , lambda_g_rate(n_vesicles)
     , lambda_v_rate(n_vesicles)
+    , lambda_g_previous_rate(n_vesicles)
+    , lambda_v_previous_rate(n_vesicles)
     , rho_inf(parameters.time_integration.rho_inf)
     , bulk_stability(membrane)
   {
@@ -807,15 +809,33 @@ namespace vesicle_iga
                            "'Volume multiplier = domain' or a smaller "
                            "reduced area)" :
                            " (f is nearly constant: no interface)")));
-        const double v   = (a_gg * b_v - a_vg * b_g) / det;
-        const double g   = (a_vv * b_g - a_gv * b_v) / det;
-        lambda_v_rate[i] = dt > 0 ? (v - lambda_v[i]) / dt : 0.;
-        lambda_g_rate[i] = dt > 0 ? (g - lambda_g[i]) / dt : 0.;
-        lambda_v[i]      = v;
-        lambda_g[i]      = g;
+        const double v            = (a_gg * b_v - a_vg * b_g) / det;
+        const double g            = (a_vv * b_g - a_gv * b_v) / det;
+        lambda_v_previous_rate[i] = lambda_v_rate[i];
+        lambda_g_previous_rate[i] = lambda_g_rate[i];
+        lambda_v_rate[i]          = dt > 0 ? (v - lambda_v[i]) / dt : 0.;
+        lambda_g_rate[i]          = dt > 0 ? (g - lambda_g[i]) / dt : 0.;
+        lambda_v[i]               = v;
+        lambda_g[i]               = g;
       }
     for (unsigned int i = 0; i < n; ++i)
       constraint[i]->get_formula().set_multipliers(lambda_g[i], lambda_v[i]);
+  }
+
+
+  template <int dim>
+  double
+  VesicleHydrodynamics<dim>::extrapolation_rate(const double rate,
+                                                const double previous_rate)
+  {
+    // A multiplier whose rate changed sign over the last two steps is not
+    // extrapolated (a limiter, as minmod is for slopes): linear
+    // extrapolation of an alternating sequence amplifies it, and at the
+    // large steps of a slow relaxation the extrapolated multipliers
+    // alternated in every step, the energy rising in every other one
+    // (doc/hydrodynamics.md, "Extrapolation with a limiter"). A developing
+    // flow, whose multipliers change monotonically, keeps the O(dt^2) lag.
+    return rate * previous_rate < 0 ? 0. : rate;
   }
 
 
@@ -837,8 +857,14 @@ namespace vesicle_iga
     step_lambda_v.resize(n);
     for (unsigned int i = 0; i < n; ++i)
       {
-        step_lambda_g[i] = lambda_g[i] + ahead * lambda_g_rate[i];
-        step_lambda_v[i] = lambda_v[i] + ahead * lambda_v_rate[i];
+        step_lambda_g[i] = lambda_g[i]
+                           + ahead
+                               * extrapolation_rate(lambda_g_rate[i],
+                                                    lambda_g_previous_rate[i]);
+        step_lambda_v[i] = lambda_v[i]
+                           + ahead
+                               * extrapolation_rate(lambda_v_rate[i],
+                                                    lambda_v_previous_rate[i]);
         constraint[i]->get_formula().set_multipliers(step_lambda_g[i],
                                                      step_lambda_v[i]);
       }
@@ -969,10 +995,12 @@ namespace vesicle_iga
     step_response = solved_step_response;
     for (unsigned int i = 0; i < n; ++i)
       {
-        lambda_g_rate[i] = (step_lambda_g[i] - lambda_g[i]) / last_dt;
-        lambda_v_rate[i] = (step_lambda_v[i] - lambda_v[i]) / last_dt;
-        lambda_g[i]      = step_lambda_g[i];
-        lambda_v[i]      = step_lambda_v[i];
+        lambda_g_previous_rate[i] = lambda_g_rate[i];
+        lambda_v_previous_rate[i] = lambda_v_rate[i];
+        lambda_g_rate[i]          = (step_lambda_g[i] - lambda_g[i]) / last_dt;
+        lambda_v_rate[i]          = (step_lambda_v[i] - lambda_v[i]) / last_dt;
+        lambda_g[i]               = step_lambda_g[i];
+        lambda_v[i]               = step_lambda_v[i];
       }
   }
 
@@ -992,7 +1020,11 @@ namespace vesicle_iga
     for (unsigned int i = 0; i < n; ++i)
       {
         const double lambda
-          = std::min(lambda_g[i], lambda_g[i] + ahead * lambda_g_rate[i]);
+          = std::min(lambda_g[i],
+                     lambda_g[i]
+                       + ahead
+                           * extrapolation_rate(lambda_g_rate[i],
+                                                lambda_g_previous_rate[i]));
         // Half the singular step: the mode's diagonal alpha_m - alpha_f
         // gamma dt sigma keeps half of alpha_m.
         largest = std::min(
@@ -1015,6 +1047,10 @@ namespace vesicle_iga
     c.vectors[prefix + ".volume_multipliers"]      = lambda_v;
     c.vectors[prefix + ".area_multiplier_rates"]   = lambda_g_rate;
     c.vectors[prefix + ".volume_multiplier_rates"] = lambda_v_rate;
+    c.vectors[prefix + ".area_multiplier_previous_rates"]
+      = lambda_g_previous_rate;
+    c.vectors[prefix + ".volume_multiplier_previous_rates"]
+      = lambda_v_previous_rate;
     // Implicit multipliers only (an empty vector is no HDF5 data set).
     if (!step_response.empty())
       {
@@ -1061,6 +1097,14 @@ namespace vesicle_iga
       {
         get("area_multiplier_rates", lambda_g_rate);
         get("volume_multiplier_rates", lambda_v_rate);
+      }
+    // Before 2026-12-07: no previous rates, extrapolation as before.
+    lambda_g_previous_rate.assign(n, 0.);
+    lambda_v_previous_rate.assign(n, 0.);
+    if (c.vectors.count(prefix + ".area_multiplier_previous_rates"))
+      {
+        get("area_multiplier_previous_rates", lambda_g_previous_rate);
+        get("volume_multiplier_previous_rates", lambda_v_previous_rate);
       }
     for (unsigned int i = 0; i < n; ++i)
       constraint[i]->get_formula().set_multipliers(lambda_g[i], lambda_v[i]);

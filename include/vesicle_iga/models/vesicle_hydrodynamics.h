@@ -226,7 +226,7 @@ namespace vesicle_iga
     /// Through the increments' constraints: the residual of every term
     /// with phase-field rows but the multipliers' at zero rate (R_0), and
     /// that of the multipliers' term with (lambda_g, lambda_v) = (1, 0)
-    /// and (0, 1) (F_g, F_v); the multipliers' term is left at (0, 1).
+    /// and (0, 1) (F_g, F_v); the multipliers' term is left as it was.
     std::array<dealii::TrilinosWrappers::MPI::Vector, 3>
     phase_row_residuals() const;
     /// Per vesicle the 12 sums of the geometry integrand about
@@ -256,8 +256,15 @@ namespace vesicle_iga
     /// The projection onto one phase field's space, for (H13).
     std::unique_ptr<GramSolver<dim>> phase_gram;
     std::vector<double>              area_0, volume_0, lambda_g, lambda_v;
-    /// d lambda / dt over the last accepted step (zero before the first).
+    /// d lambda / dt over the last accepted step and over the one before
+    /// it (zero before the first).
     std::vector<double> lambda_g_rate, lambda_v_rate;
+    std::vector<double> lambda_g_previous_rate, lambda_v_previous_rate;
+    /// The rate by which extrapolated multipliers move over the next step:
+    /// that of the last step, or none where it changed sign (see the
+    /// definition).
+    static double
+    extrapolation_rate(const double rate, const double previous_rate);
     /// The rate laws' matrices of the last accepted state (implicit
     /// multipliers: their first estimate of the step's response), and the
     /// multipliers the last solved step used.

@@ -33,7 +33,8 @@ namespace vesicle_iga
     bool membrane_volume_multiplier = true;
     /// Which values of the global multipliers a step uses: true (this
     /// project's default) the (H13) values of the last accepted step
-    /// extrapolated linearly to the end of the step, false the (H13)
+    /// extrapolated linearly to the end of the step (but where their rate
+    /// changed sign), false the (H13)
     /// values themselves, lagged by a step as in the source
     /// (doc/hydrodynamics.md, "Global multipliers in time").
     bool extrapolated_multipliers = true;
@@ -41,7 +42,7 @@ namespace vesicle_iga
     /// V_i(0), A_i(0) (H7) (not in the source; the step is solved about 2-3
     /// times), to the relative tolerance given, in at most the number of
     /// iterations given (doc/hydrodynamics.md, "Implicit global
-    /// multipliers"). The first iterate is the extrapolated one.
+    /// multipliers"). The first iterate is the last step's.
     bool         implicit_multipliers      = false;
     double       multiplier_tolerance      = 1e-5;
     unsigned int max_multiplier_iterations = 8;
