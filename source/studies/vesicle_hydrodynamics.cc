@@ -722,7 +722,7 @@ namespace vesicle_iga
           "prm/doublet-shear-quick.prm the area error after 30 steps falls "
           "from 0.77 % to 0.11 % (doc/hydrodynamics.md). implicit (not in "
           "the source): the step is solved again with its multipliers "
-          "iterated (secant, from the last step's values) until it ends on "
+          "iterated (secant, from the extrapolated values) until it ends on "
           "V_i(0), A_i(0) to 'Multiplier tolerance': no drift and no "
           "relaxation, at about 2-3 solves per step (doc/hydrodynamics.md, "
           "\"Implicit global multipliers\").");

@@ -42,7 +42,7 @@ namespace vesicle_iga
     /// V_i(0), A_i(0) (H7) (not in the source; the step is solved about 2-3
     /// times), to the relative tolerance given, in at most the number of
     /// iterations given (doc/hydrodynamics.md, "Implicit global
-    /// multipliers"). The first iterate is the last step's.
+    /// multipliers"). The first iterate is the extrapolated one.
     bool         implicit_multipliers      = false;
     double       multiplier_tolerance      = 1e-5;
     unsigned int max_multiplier_iterations = 8;
