@@ -28,6 +28,7 @@
 //     the change of the electrolyte term to within the membrane term's
 //     share (measured below 1e-3 in doc/validation.md, section 3).
 
+#include "../root_output.h"
 #include "../time_series_comparison.h"
 
 using namespace dealii;
@@ -55,9 +56,8 @@ int
 main(int argc, char *argv[])
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const bool    root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
-  std::ofstream out(root ? "output" : "/dev/null");
-  const std::string common
+  std::ofstream                    out = root_output();
+  const std::string                common
     = "set Study = willmore-flow\nset Dimension = 2\n"
       "set Print details = false\n"
       "subsection Willmore flow\n"

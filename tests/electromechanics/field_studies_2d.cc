@@ -28,6 +28,7 @@
 //     -2.3e-4), which the stationarity measure leaves out.
 // The test fails on any NO.
 
+#include "../root_output.h"
 #include "../time_series_comparison.h"
 
 using namespace dealii;
@@ -36,8 +37,7 @@ int
 main(int argc, char *argv[])
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const bool    root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
-  std::ofstream out(root ? "output" : "/dev/null");
+  std::ofstream                    out = root_output();
   out << std::setprecision(4);
   const double h = 1;
 

@@ -52,6 +52,7 @@
 #include <fstream>
 #include <iomanip>
 
+#include "../root_output.h"
 #include "fixed_fields.h"
 
 using namespace vesicle_iga;
@@ -178,8 +179,7 @@ int
 main(int argc, char *argv[])
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  out.open(Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0 ? "output" :
-                                                                   "/dev/null");
+  out = root_output();
   out << std::setprecision(3);
   const auto check = [](const bool ok) { return ok ? ": yes\n" : ": NO\n"; };
 

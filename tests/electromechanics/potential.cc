@@ -32,6 +32,8 @@
 #include <fstream>
 #include <iomanip>
 
+#include "../root_output.h"
+
 using namespace vesicle_iga;
 using namespace dealii;
 
@@ -141,8 +143,7 @@ int
 main(int argc, char *argv[])
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  out.open(Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0 ? "output" :
-                                                                   "/dev/null");
+  out = root_output();
   run({-2, 3, 0.25, 0.5, 3e-7, false}, false);
   for (const double eps : {0.4, 0.2, 0.1})
     run({-8, 8, eps / 2, eps, 3e-7, true}, true);

@@ -32,6 +32,8 @@
 #include <fstream>
 #include <iomanip>
 
+#include "../root_output.h"
+
 using namespace vesicle_iga;
 using namespace dealii;
 
@@ -102,8 +104,7 @@ int
 main(int argc, char *argv[])
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  out.open(Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0 ? "output" :
-                                                                   "/dev/null");
+  out = root_output();
   for (const double Re : {1., 100.})
     {
       std::vector<double> per_newton;

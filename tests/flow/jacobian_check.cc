@@ -26,6 +26,8 @@
 #include <fstream>
 #include <iomanip>
 
+#include "../root_output.h"
+
 using namespace vesicle_iga;
 using namespace dealii;
 
@@ -138,8 +140,7 @@ int
 main(int argc, char *argv[])
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  out.open(Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0 ? "output" :
-                                                                   "/dev/null");
+  out = root_output();
   check<2>(2, true);
   check<2>(3, true);
   check<2>(2, false);

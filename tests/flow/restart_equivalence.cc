@@ -16,16 +16,15 @@
 #include <iostream>
 #include <sstream>
 
+#include "../root_output.h"
 #include "../time_series_comparison.h"
 
 int
 main(int argc, char *argv[])
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const bool                               root
-    = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
-  std::ofstream     out(root ? "output" : "/dev/null");
-  const std::string common
+  std::ofstream                            out = root_output();
+  const std::string                        common
     = "set Study = navier-stokes\n"
       "set Print details = false\n"
       "subsection Navier-Stokes\n"

@@ -17,16 +17,16 @@
 //  - the vesicle is not lost in the start: |dV/V| < 1e-4 (9.6e-6
 //    measured) and |dA/A| < 5e-3 (2.0e-3 measured).
 
+#include "../root_output.h"
 #include "../time_series_comparison.h"
 
 int
 main(int argc, char *argv[])
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const bool                               root
-    = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
-  std::ofstream out(root ? "output" : "/dev/null");
-  const int     code = run_study_quietly(R"(set Study = vesicle-hydrodynamics
+  const bool                               root = root_rank();
+  std::ofstream                            out  = root_output();
+  const int code = run_study_quietly(R"(set Study = vesicle-hydrodynamics
 set Dimension = 2
 set Output directory = start
 subsection Vesicle hydrodynamics

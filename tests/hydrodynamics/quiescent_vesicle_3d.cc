@@ -21,16 +21,16 @@
 // The reduced volume the study builds (0.9) is printed by the study and
 // checked in tests/hydrodynamics/initial_vesicle_3d.
 
+#include "../root_output.h"
 #include "../time_series_comparison.h"
 
 int
 main(int argc, char *argv[])
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const bool                               root
-    = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
-  std::ofstream out(root ? "output" : "/dev/null");
-  const int     code = run_study_quietly(R"(set Study = vesicle-hydrodynamics
+  const bool                               root = root_rank();
+  std::ofstream                            out  = root_output();
+  const int code = run_study_quietly(R"(set Study = vesicle-hydrodynamics
 set Dimension = 3
 set Output directory = quiescent
 subsection Vesicle hydrodynamics

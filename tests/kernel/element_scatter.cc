@@ -21,6 +21,8 @@
 #include <fstream>
 #include <random>
 
+#include "../root_output.h"
+
 using namespace vesicle_iga;
 using namespace dealii;
 
@@ -135,9 +137,7 @@ int
 main(int argc, char *argv[])
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  std::ofstream out(Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0 ?
-                      "output" :
-                      "/dev/null");
+  std::ofstream                    out = root_output();
   check<2>(SplineSpace<2>({KnotVector::uniform(2, 9, 0, 1),
                            KnotVector::uniform(2, 8, 0, 1, -1, true)}),
            2,

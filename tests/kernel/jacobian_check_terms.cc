@@ -52,6 +52,8 @@
 #include <fstream>
 #include <iomanip>
 
+#include "../root_output.h"
+
 using namespace vesicle_iga;
 using namespace dealii;
 
@@ -293,8 +295,7 @@ int
 main(int argc, char *argv[])
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  out.open(Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0 ? "output" :
-                                                                   "/dev/null");
+  out = root_output();
   phase_field_terms<2>();
   phase_field_terms<3>();
   linear_terms<2>();

@@ -12,6 +12,7 @@
 #include <cmath>
 #include <fstream>
 
+#include "../root_output.h"
 #include "double_well_example.h"
 
 using namespace vesicle_iga;
@@ -21,10 +22,8 @@ int
 main(int argc, char *argv[])
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  std::ofstream out(Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0 ?
-                      "output" :
-                      "/dev/null");
-  std::array<KnotVector, 2> kv{
+  std::ofstream                    out = root_output();
+  std::array<KnotVector, 2>        kv{
     {KnotVector::uniform(3, 6, -1, 1), KnotVector::uniform(3, 5, -1, 1)}};
   const SplineSpace<2>      space(kv);
   const PatchMesh<2>        mesh(MPI_COMM_WORLD, space, nullptr);

@@ -24,6 +24,8 @@
 #include <fstream>
 #include <map>
 
+#include "../root_output.h"
+
 using namespace vesicle_iga;
 using namespace dealii;
 
@@ -139,9 +141,7 @@ int
 main(int argc, char *argv[])
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  std::ofstream out(Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0 ?
-                      "output" :
-                      "/dev/null");
+  std::ofstream                    out = root_output();
 
   const KnotVector kx(
     2,

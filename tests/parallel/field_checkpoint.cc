@@ -25,6 +25,8 @@
 #include <cmath>
 #include <fstream>
 
+#include "../root_output.h"
+
 using namespace vesicle_iga;
 using namespace dealii;
 
@@ -104,9 +106,7 @@ int
 main(int argc, char *argv[])
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  std::ofstream out(Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0 ?
-                      "output" :
-                      "/dev/null");
+  std::ofstream                    out = root_output();
   check<2>("2D, 2 components",
            SplineSpace<2>(std::array<KnotVector, 2>{
              {KnotVector::uniform(2, 9, 0, 1),

@@ -18,6 +18,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "../root_output.h"
 #include "in_process.h"
 #include "studies.h"
 #include "subprocess.h"
@@ -26,9 +27,8 @@ int
 main(int argc, char *argv[])
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const bool                               root
-    = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
-  std::ofstream out(root ? "output" : "/dev/null");
+  const bool                               root = root_rank();
+  std::ofstream                            out  = root_output();
 
   run_in_process(circle_flow(4, "run"));
   run_in_process(cavity_flow(2, "cavity"));

@@ -17,6 +17,7 @@
 #include <fstream>
 #include <sys/resource.h>
 
+#include "../root_output.h"
 #include "../time_series_comparison.h"
 #include "in_process.h"
 #include "studies.h"
@@ -26,9 +27,7 @@ int
 main(int argc, char *argv[])
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const bool                               root
-    = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
-  std::ofstream out(root ? "output" : "/dev/null");
+  std::ofstream                            out = root_output();
 
   run_in_process(circle_flow(8, "straight"));
   run_in_process(circle_flow(4, "run"));

@@ -35,6 +35,7 @@
 #include <fstream>
 #include <iostream>
 
+#include "../root_output.h"
 #include "unit_box_problem.h"
 
 using namespace vesicle_iga;
@@ -131,7 +132,7 @@ main(int argc, char *argv[])
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   std::ofstream                    out;
-  if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+  if (root_rank())
     out.open("output");
   check<2>(64, out);
   check<3>(16, out);

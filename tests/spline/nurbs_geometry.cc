@@ -25,6 +25,8 @@
 
 #include <fstream>
 
+#include "../root_output.h"
+
 using namespace vesicle_iga;
 using namespace dealii;
 
@@ -38,10 +40,8 @@ int
 main(int argc, char *argv[])
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  std::ofstream out(Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0 ?
-                      "output" :
-                      "/dev/null");
-  const auto    coarse = make_plate_with_hole_geometry();
+  std::ofstream                    out    = root_output();
+  const auto                       coarse = make_plate_with_hole_geometry();
 
   double circle = 0, left = 0, top = 0;
   for (unsigned int i = 0; i <= 1000; ++i)
@@ -154,7 +154,7 @@ main(int argc, char *argv[])
               err = std::max(err, std::abs(fe_values[q] - sv.value(cc[0], q)));
           }
       err = Utilities::MPI::max(err, MPI_COMM_WORLD);
-      if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+      if (root_rank())
         out << "FE_Q(" << p << ") conversion of a spline field with "
             << space.n_basis() << " unknowns: " << ok(err) << "\n";
     }

@@ -14,24 +14,23 @@
 //    0.999).
 // Same outcome on 1 and 2 ranks.
 
+#include "../root_output.h"
 #include "relaxation_checks.h"
 
 int
 main(int argc, char *argv[])
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const bool                               root
-    = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
-  std::ofstream  out(root ? "output" : "/dev/null");
-  const StudyRun run = run_study(
+  std::ofstream                            out = root_output();
+  const StudyRun                           run = run_study(
     "set Study = willmore-flow\nset Dimension = 2\n"
-    "set Output directory = results\nset Print details = false\n"
-    "subsection Willmore flow\nset Initial shape = ellipsoid\n"
-    "set Center = 0\nset Semi-axes = 2.0, 0.5\n"
-    "subsection Mesh\nset Lower corner = -2.6, -1.1\n"
-    "set Upper corner = 2.6, 1.1\nset Elements = 104, 44\nend\n"
-    "subsection Time stepping\nset Max steps = 30\nset Initial dt = 1e-4\n"
-    "end\nend\n");
+                              "set Output directory = results\nset Print details = false\n"
+                              "subsection Willmore flow\nset Initial shape = ellipsoid\n"
+                              "set Center = 0\nset Semi-axes = 2.0, 0.5\n"
+                              "subsection Mesh\nset Lower corner = -2.6, -1.1\n"
+                              "set Upper corner = 2.6, 1.1\nset Elements = 104, 44\nend\n"
+                              "subsection Time stepping\nset Max steps = 30\nset Initial dt = 1e-4\n"
+                              "end\nend\n");
   const auto series = read_named_time_series("results/time-series.csv");
   out << "initial E_B/kappa = " << std::setprecision(3)
       << number_after(run.line_starting_with("initial"), "kappa = ")

@@ -28,16 +28,15 @@
 #include <sstream>
 #include <tuple>
 
+#include "../root_output.h"
 #include "../time_series_comparison.h"
 
 int
 main(int argc, char *argv[])
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const bool                               root
-    = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
-  std::ofstream     out(root ? "output" : "/dev/null");
-  const std::string common
+  std::ofstream                            out = root_output();
+  const std::string                        common
     = "set Study = willmore-flow\nset Print details = true\n"
       "subsection Willmore flow\nset Semi-axes = 1\nset Center = 0,0\n"
       "subsection Mesh\nset Lower corner = -3.2\nset Upper corner = 3.2\n"

@@ -24,6 +24,8 @@
 #include <fstream>
 #include <iomanip>
 
+#include "../root_output.h"
+
 using namespace vesicle_iga;
 using namespace dealii;
 
@@ -59,9 +61,7 @@ int
 main(int argc, char *argv[])
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  std::ofstream out(Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0 ?
-                      "output" :
-                      "/dev/null");
+  std::ofstream                    out = root_output();
   out << std::setprecision(3);
   out << "(a) eps = 2h: E_B / (8 pi kappa) - 1" << std::endl;
   std::vector<double> a;

@@ -22,6 +22,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "../root_output.h"
 #include "relaxation_checks.h"
 
 namespace
@@ -65,11 +66,9 @@ int
 main(int argc, char *argv[])
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const bool                               root
-    = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
-  std::ofstream out(root ? "output" : "/dev/null");
-  const double  a = 1.0, b = 0.4;
-  const double  L = ellipse_length(a, b), A = M_PI * a * b;
+  std::ofstream                            out = root_output();
+  const double                             a = 1.0, b = 0.4;
+  const double L = ellipse_length(a, b), A = M_PI * a * b;
   for (const std::string targets : {"zero level set", "diffuse"})
     {
       const std::string dir = targets == "diffuse" ? "diffuse" : "zero";
