@@ -917,6 +917,16 @@ namespace vesicle_iga
         secant.emplace_back(
           std::array<double, 2>{{step_lambda_v[i], step_lambda_g[i]}}, J);
       }
+    // The constraint errors at the start of the step (at most the
+    // tolerance): the part J^-1 e_n of the step's multipliers that removes
+    // them is not carried into the next step (accept_step).
+    const auto start_geometry
+      = integrate_geometry(std::vector<Point<dim>>(n), false);
+    std::vector<std::array<double, 2>> start_errors(n);
+    for (unsigned int i = 0; i < n; ++i)
+      start_errors[i]
+        = {{start_geometry[VesicleGeometry<dim>::n_sums * i + 1] - volume_0[i],
+            start_geometry[VesicleGeometry<dim>::n_sums * i] - area_0[i]}};
     const auto &dofs = flow_model->dofs();
     StepReport  report;
     for (unsigned int iteration = 1;; ++iteration)
@@ -945,9 +955,33 @@ namespace vesicle_iga
         if (worst <= membrane.multiplier_tolerance)
           {
             solved_step_response.resize(n);
+            solved_drift_free.resize(n);
             for (unsigned int i = 0; i < n; ++i)
-              for (unsigned int k = 0; k < 4; ++k)
-                solved_step_response[i][k] = secant[i].jacobian()[k] / dt;
+              {
+                const auto &J = secant[i].jacobian();
+                for (unsigned int k = 0; k < 4; ++k)
+                  solved_step_response[i][k] = J[k] / dt;
+                // G(lambda) = e_n + c + J lambda = 0 at the step's lambda;
+                // c + J lambda* = 0 defines the multipliers lambda* that
+                // keep the constraints where they are: lambda* = lambda +
+                // J^-1 e_n. At small steps the correction J^-1 e_n grows
+                // like 1 / dt; carried into the next step as its start it
+                // made the multipliers alternate with growing amplitude
+                // (HD2 at IN = 5: lambda_g 219, 1109, -55, 1101, -100,
+                // 3881, -1393, and the stability limit then cut dt to
+                // 3e-6; doc/hydrodynamics.md, "Implicit global
+                // multipliers").
+                const double det     = J[0] * J[3] - J[1] * J[2];
+                const auto  &e       = start_errors[i];
+                solved_drift_free[i] = {{step_lambda_v[i], step_lambda_g[i]}};
+                if (std::abs(det) > 0)
+                  {
+                    solved_drift_free[i][0]
+                      += (J[3] * e[0] - J[1] * e[1]) / det;
+                    solved_drift_free[i][1]
+                      += (J[0] * e[1] - J[2] * e[0]) / det;
+                  }
+              }
             report.counters = {double(iteration)};
             return report;
           }
@@ -1001,10 +1035,10 @@ namespace vesicle_iga
       {
         lambda_g_previous_rate[i] = lambda_g_rate[i];
         lambda_v_previous_rate[i] = lambda_v_rate[i];
-        lambda_g_rate[i]          = (step_lambda_g[i] - lambda_g[i]) / last_dt;
-        lambda_v_rate[i]          = (step_lambda_v[i] - lambda_v[i]) / last_dt;
-        lambda_g[i]               = step_lambda_g[i];
-        lambda_v[i]               = step_lambda_v[i];
+        lambda_g_rate[i] = (solved_drift_free[i][1] - lambda_g[i]) / last_dt;
+        lambda_v_rate[i] = (solved_drift_free[i][0] - lambda_v[i]) / last_dt;
+        lambda_g[i]      = solved_drift_free[i][1];
+        lambda_v[i]      = solved_drift_free[i][0];
       }
   }
 

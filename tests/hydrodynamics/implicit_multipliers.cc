@@ -17,8 +17,9 @@
 // - the shape follows the same trajectory: the inclination angles of the
 //   two runs agree to 1e-3 rad (1.5e-4 measured);
 // - restart equivalence with implicit multipliers (8 steps straight
-//   against 4 + 4 from the checkpoint): the rate laws that start the
-//   secant iteration are rebuilt from the loaded state.
+//   against 4 + 4 from the checkpoint): the secant's step response that
+//   starts the next step's iteration and the multipliers' rates are part
+//   of the checkpoint.
 
 #include <deal.II/base/mpi.h>
 

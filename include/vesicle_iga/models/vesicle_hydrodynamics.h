@@ -275,6 +275,10 @@ namespace vesicle_iga
     /// next step's first estimate, times its dt; empty: none yet, the rate
     /// laws give it), and that of the step last solved.
     std::vector<std::array<double, 4>> step_response, solved_step_response;
+    /// Implicit multipliers: per vesicle (lambda_v, lambda_g) of the step
+    /// last solved without the part that removed the constraint errors of
+    /// its start (the values kept and extrapolated after it).
+    std::vector<std::array<double, 2>> solved_drift_free;
     double                             last_dt = 0;
     /// rho_inf of the generalized-alpha steps, for largest_step().
     const double        rho_inf;
