@@ -1026,10 +1026,11 @@ namespace vesicle_iga
         update_multipliers(last_dt);
         return;
       }
-    // The multipliers of the step just taken and their rate over it (the
-    // next step's first iterate), and the step's secant estimate of their
-    // response (the next step's first Jacobian; the rate laws are needed
-    // only before a first step).
+    // The multipliers of the step just taken without its correction of
+    // the start's constraint error (lambda*, implicit_step) and their rate
+    // over it (the next step's first iterate), and the step's secant
+    // estimate of their response (the next step's first Jacobian; the rate
+    // laws are needed only before a first step).
     step_response = solved_step_response;
     for (unsigned int i = 0; i < n; ++i)
       {
