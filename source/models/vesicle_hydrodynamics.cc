@@ -777,11 +777,9 @@ namespace vesicle_iga
   VesicleHydrodynamics<dim>::update_multipliers(const double dt)
   {
     const auto laws = rate_laws(dt);
-    rate_matrices.resize(n);
     for (unsigned int i = 0; i < n; ++i)
       {
         const auto [a_vv, a_vg, a_gv, a_gg, b_v, b_g] = laws[i];
-        rate_matrices[i] = {{a_vv, a_vg, a_gv, a_gg}};
         // With beta = 1 (Volume multiplier = domain) and the pointwise f
         // this was the Gram determinant |Omega| int f^2 - (int f)^2 of spec
         // 4.6. With the membrane weight beta = delta_eps it is not a Gram
@@ -890,15 +888,11 @@ namespace vesicle_iga
     // lambda_g) (the rows of (H13): dV/dt = -(... + lambda_v F_v + lambda_g
     // F_g)(1), eta_phi dA/dt the same at Y).
     const double eta = membrane.mobility;
-    // The rate laws at the state: needed before a first step has given a
-    // secant estimate (also after a restart from a state set without
-    // (H13)).
-    if (step_response.size() != n && rate_matrices.size() != n)
-      {
-        rate_matrices.clear();
-        for (const auto &law : rate_laws(0))
-          rate_matrices.push_back({{law[0], law[1], law[2], law[3]}});
-      }
+    // The rate laws at the state: needed only before a first step has
+    // given a secant estimate.
+    const auto                    laws = step_response.size() == n ?
+                                           std::vector<std::array<double, 6>>() :
+                                           rate_laws(0);
     std::vector<SecantIteration2> secant;
     // The last step's secant estimate, scaled to this step (the response
     // is about proportional to dt while the rate term dominates the step
@@ -911,7 +905,7 @@ namespace vesicle_iga
             J[k] = dt * step_response[i][k];
         else
           {
-            const auto &a = rate_matrices[i];
+            const auto &a = laws[i];
             J = {{-dt * a[0], -dt * a[1], -dt * a[2] / eta, -dt * a[3] / eta}};
           }
         secant.emplace_back(
@@ -1157,9 +1151,6 @@ namespace vesicle_iga
                                     stored[4 * i + 2],
                                     stored[4 * i + 3]}});
       }
-    // The rate laws are computed by the first implicit step if it needs
-    // them (no step response in the checkpoint).
-    rate_matrices.clear();
   }
 
   template class VesicleHydrodynamics<2>;

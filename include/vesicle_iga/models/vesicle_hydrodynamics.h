@@ -265,11 +265,8 @@ namespace vesicle_iga
     /// definition).
     static double
     extrapolation_rate(const double rate, const double previous_rate);
-    /// The rate laws' matrices of the last accepted state (implicit
-    /// multipliers: their first estimate of the step's response), and the
-    /// multipliers the last solved step used.
-    std::vector<std::array<double, 4>> rate_matrices;
-    std::vector<double>                step_lambda_g, step_lambda_v;
+    /// The multipliers the last solved step used.
+    std::vector<double> step_lambda_g, step_lambda_v;
     /// Implicit multipliers: per vesicle the secant estimate of d(V, A) /
     /// d(lambda_v, lambda_g) per unit step of the last accepted step (the
     /// next step's first estimate, times its dt; empty: none yet, the rate
