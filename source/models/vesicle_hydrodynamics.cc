@@ -971,18 +971,9 @@ namespace vesicle_iga
                 //   lambda*, the next step adds e_{n+1} again (steps of
                 //   1e-5: |dA/A| 5.6e-7, 1.4e-6, 3.6e-6, 9.1e-6).
                 // doc/hydrodynamics.md, "Implicit global multipliers".
-                const double                det = J[0] * J[3] - J[1] * J[2];
-                const std::array<double, 2> e
-                  = {{start_errors[i][0] - residuals[i][0],
-                      start_errors[i][1] - residuals[i][1]}};
-                solved_drift_free[i] = {{step_lambda_v[i], step_lambda_g[i]}};
-                if (std::abs(det) > 0)
-                  {
-                    solved_drift_free[i][0]
-                      += (J[3] * e[0] - J[1] * e[1]) / det;
-                    solved_drift_free[i][1]
-                      += (J[0] * e[1] - J[2] * e[0]) / det;
-                  }
+                solved_drift_free[i] = secant[i].without_change(
+                  {{residuals[i][0] - start_errors[i][0],
+                    residuals[i][1] - start_errors[i][1]}});
               }
             report.counters = {double(iteration)};
             return report;

@@ -59,12 +59,21 @@ namespace vesicle_iga
               J = updated;
           }
       }
-    previous_x       = current;
-    previous_G       = G;
-    has_previous     = true;
-    const double det = determinant(J);
-    current[0] -= (J[3] * G[0] - J[1] * G[1]) / det;
-    current[1] -= (J[0] * G[1] - J[2] * G[0]) / det;
+    previous_x   = current;
+    previous_G   = G;
+    has_previous = true;
+    current      = without_change(G);
     return current;
+  }
+
+
+  std::array<double, 2>
+  SecantIteration2::without_change(const std::array<double, 2> &change) const
+  {
+    // J is never singular: checked at the start, and updates that would
+    // make it nearly so are skipped.
+    const double det = determinant(J);
+    return {{current[0] - (J[3] * change[0] - J[1] * change[1]) / det,
+             current[1] - (J[0] * change[1] - J[2] * change[0]) / det}};
   }
 } // namespace vesicle_iga

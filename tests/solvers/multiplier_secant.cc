@@ -7,6 +7,9 @@
 //   2n = 4 updates);
 // - nonlinear, G(x) = A x + 0.2 (x_0^2, x_1^2) - G_root with the root (1, -1)
 //   put in by construction: converges to 1e-10 in at most 10 evaluations;
+// - without_change(c) = x - J^-1 c, what the implicit multipliers keep
+//   after a step: for the linear map with the exact Jacobian, G there is
+//   G(x) - c to round-off (checked to 1e-14);
 // - the starting Jacobian singular: a clear error.
 // The iteration counts are printed: the arithmetic is a few dozen operations
 // without any tolerance near a decision.
@@ -84,6 +87,17 @@ main()
       << verdict(k_non <= 10 && std::abs(x[0] - 1) < 1e-10
                  && std::abs(x[1] + 1) < 1e-10)
       << '\n';
+
+  {
+    const std::array<double, 2> x0{{0.3, -0.2}}, change{{0.1, 0.05}};
+    const SecantIteration2      secant(x0, A);
+    const auto                  g0 = linear(x0);
+    const auto                  g  = linear(secant.without_change(change));
+    out << "without_change: G smaller by the change: "
+        << verdict(std::abs(g[0] - (g0[0] - change[0])) < 1e-14
+                   && std::abs(g[1] - (g0[1] - change[1])) < 1e-14)
+        << '\n';
+  }
 
   bool refused = false;
   try

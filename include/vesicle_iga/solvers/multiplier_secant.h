@@ -40,6 +40,15 @@ namespace vesicle_iga
       return J;
     }
 
+    /// x() - J^-1 @p change: by the current estimate J, the x at which G
+    /// would be smaller by @p change than at x(). The implicit multipliers
+    /// keep the x of a step without its change of the constraint errors
+    /// (change = G at the end minus G at the start of the step), so that
+    /// the next step starts from multipliers that hold the errors where
+    /// they are.
+    std::array<double, 2>
+    without_change(const std::array<double, 2> &change) const;
+
   private:
     std::array<double, 2> current, previous_x, previous_G;
     std::array<double, 4> J;
