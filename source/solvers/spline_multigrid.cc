@@ -8,6 +8,7 @@
 #include <vesicle_iga/solvers/restricted_schwarz_ilu.h>
 #include <vesicle_iga/solvers/spline_multigrid.h>
 
+#include <algorithm>
 #include <sstream>
 
 namespace vesicle_iga
@@ -190,6 +191,70 @@ namespace vesicle_iga
       return kv.n_elements() >= 4
              && (!kv.is_periodic() || kv.n_elements() >= 2 * (kv.degree() + 1));
     }
+
+
+    /// The prolongation between two levels, the Kronecker product of the
+    /// univariate knot-insertion matrices, applied row by row without
+    /// forming it: for_row calls action(J, value) for every coarse natural
+    /// index J in the row of a fine basis function (the same component).
+    template <int dim>
+    class TensorProlongation
+    {
+    public:
+      TensorProlongation(
+        const std::array<std::vector<std::vector<double>>, dim> &univariate,
+        const std::array<unsigned int, dim>                     &coarse_n_basis,
+        const unsigned int                                       nc)
+        : coarse_n_basis(coarse_n_basis)
+        , nc(nc)
+      {
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            nonzeros[d].resize(univariate[d].size());
+            for (unsigned int i = 0; i < univariate[d].size(); ++i)
+              for (unsigned int j = 0; j < univariate[d][i].size(); ++j)
+                if (univariate[d][i][j] != 0.)
+                  nonzeros[d][i].emplace_back(j, univariate[d][i][j]);
+          }
+      }
+
+      template <typename Action>
+      void
+      for_row(const std::array<unsigned int, dim> &fine_basis,
+              const unsigned int                   component,
+              const Action                        &action) const
+      {
+        std::array<unsigned int, dim> k{};
+        while (true)
+          {
+            unsigned int J = component, stride = nc;
+            double       v = 1;
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                const auto &entry = nonzeros[d][fine_basis[d]][k[d]];
+                J += entry.first * stride;
+                v *= entry.second;
+                stride *= coarse_n_basis[d];
+              }
+            action(J, v);
+            unsigned int d = 0;
+            for (; d < dim; ++d)
+              if (++k[d] < nonzeros[d][fine_basis[d]].size())
+                break;
+              else
+                k[d] = 0;
+            if (d == dim)
+              return;
+          }
+      }
+
+    private:
+      /// Per direction and fine basis function: (coarse index, value).
+      std::array<std::vector<std::vector<std::pair<unsigned int, double>>>, dim>
+                                    nonzeros;
+      std::array<unsigned int, dim> coarse_n_basis;
+      unsigned int                  nc;
+    };
   } // namespace
 
   template <int dim>
@@ -228,106 +293,16 @@ namespace vesicle_iga
 
     std::vector<std::unique_ptr<Level>> top_down;
     top_down.push_back(std::move(fine));
-    const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(communicator);
-    const unsigned int rank    = Utilities::MPI::this_mpi_process(communicator);
-    while (true)
+    const unsigned int coarse_size
+      = prm.coarse_size > 0 ? prm.coarse_size : (dim == 2 ? 4000u : 1000u);
+    while (static_cast<unsigned int>(
+             std::count(constrained.begin(), constrained.end(), false))
+           > coarse_size)
       {
-        Level       &f      = *top_down.back();
-        unsigned int n_kept = 0;
-        for (unsigned int i = 0; i < f.n_natural(); ++i)
-          n_kept += constrained[i] ? 0 : 1;
-        if (n_kept <= (prm.coarse_size > 0 ? prm.coarse_size :
-                                             (dim == 2 ? 4000u : 1000u)))
+        auto coarse = coarser_level(*top_down.back(), constrained);
+        if (!coarse)
           break;
-        auto c = std::make_unique<Level>();
-        c->nc  = nc;
-        bool                                              coarsened = false;
-        std::array<std::vector<std::vector<double>>, dim> P1;
-        for (unsigned int d = 0; d < dim; ++d)
-          {
-            const KnotVector &kv    = f.knot_vectors[d];
-            const bool        halve = can_be_halved(kv);
-            c->knot_vectors[d]      = halve ? kv.coarsened() : kv;
-            coarsened               = coarsened || halve;
-            c->n_basis[d]           = c->knot_vectors[d].n_basis();
-            P1[d] = prolongation_matrix(c->knot_vectors[d], kv);
-          }
-        if (!coarsened)
-          break;
-        // Non-zero columns of every univariate row.
-        std::array<std::vector<std::vector<std::pair<unsigned int, double>>>,
-                   dim>
-          nz;
-        for (unsigned int d = 0; d < dim; ++d)
-          {
-            nz[d].resize(P1[d].size());
-            for (unsigned int i = 0; i < P1[d].size(); ++i)
-              for (unsigned int j = 0; j < P1[d][i].size(); ++j)
-                if (P1[d][i][j] != 0.)
-                  nz[d][i].emplace_back(j, P1[d][i][j]);
-          }
-        // The row of P for fine natural index I: tensor product, the same
-        // component.
-        const auto for_row = [&](const unsigned int I, const auto &action) {
-          const auto                    m = f.multi_index(I);
-          std::array<unsigned int, dim> k{};
-          while (true)
-            {
-              unsigned int J = I % nc, stride = nc;
-              double       v = 1;
-              for (unsigned int d = 0; d < dim; ++d)
-                {
-                  J += nz[d][m[d]][k[d]].first * stride;
-                  v *= nz[d][m[d]][k[d]].second;
-                  stride *= c->n_basis[d];
-                }
-              action(J, v);
-              unsigned int d = 0;
-              for (; d < dim; ++d)
-                if (++k[d] < nz[d][m[d]].size())
-                  break;
-                else
-                  k[d] = 0;
-              if (d == dim)
-                break;
-            }
-        };
-        std::vector<bool> coarse_constrained(c->n_natural(), false);
-        for (unsigned int I = 0; I < f.n_natural(); ++I)
-          if (constrained[I])
-            for_row(I, [&](const unsigned int J, const double) {
-              coarse_constrained[J] = true;
-            });
-        // Level unknowns: the kept functions in natural order, owned in
-        // contiguous blocks.
-        c->index.assign(c->n_natural(), numbers::invalid_dof_index);
-        for (unsigned int J = 0; J < c->n_natural(); ++J)
-          if (!coarse_constrained[J])
-            c->index[J] = c->n_unknowns++;
-        c->owned.set_size(c->n_unknowns);
-        c->owned.add_range(c->n_unknowns * rank / n_ranks,
-                           c->n_unknowns * (rank + 1) / n_ranks);
-        c->owned.compress();
-
-        // Prolongation from c to f (rows: f's owned unknowns).
-        DynamicSparsityPattern sp(f.n_unknowns, c->n_unknowns, f.owned);
-        for (unsigned int I = 0; I < f.n_natural(); ++I)
-          if (!constrained[I] && f.owned.is_element(f.index[I]))
-            for_row(I, [&](const unsigned int J, const double) {
-              if (!coarse_constrained[J])
-                sp.add(f.index[I], c->index[J]);
-            });
-        f.prolongation.reinit(f.owned, c->owned, sp, communicator);
-        for (unsigned int I = 0; I < f.n_natural(); ++I)
-          if (!constrained[I] && f.owned.is_element(f.index[I]))
-            for_row(I, [&](const unsigned int J, const double v) {
-              if (!coarse_constrained[J])
-                f.prolongation.set(f.index[I], c->index[J], v);
-            });
-        f.prolongation.compress(VectorOperation::insert);
-
-        constrained = coarse_constrained;
-        top_down.push_back(std::move(c));
+        top_down.push_back(std::move(coarse));
       }
     // Store coarsest first; each level's prolongation maps the level below
     // (index l - 1) into it.
@@ -344,6 +319,76 @@ namespace vesicle_iga
         l->r.reinit(l->owned, communicator);
         l->t.reinit(l->owned, communicator);
       }
+  }
+
+
+  template <int dim>
+  std::unique_ptr<typename SplineMultigrid<dim>::Level>
+  SplineMultigrid<dim>::coarser_level(Level             &f,
+                                      std::vector<bool> &constrained) const
+  {
+    auto c = std::make_unique<Level>();
+    c->nc  = f.nc;
+    bool                                              coarsened = false;
+    std::array<std::vector<std::vector<double>>, dim> P1;
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        const KnotVector &kv    = f.knot_vectors[d];
+        const bool        halve = can_be_halved(kv);
+        c->knot_vectors[d]      = halve ? kv.coarsened() : kv;
+        coarsened               = coarsened || halve;
+        c->n_basis[d]           = c->knot_vectors[d].n_basis();
+        P1[d]                   = prolongation_matrix(c->knot_vectors[d], kv);
+      }
+    if (!coarsened)
+      return nullptr;
+    const TensorProlongation<dim> P(P1, c->n_basis, c->nc);
+
+    std::vector<bool> coarse_constrained(c->n_natural(), false);
+    for (unsigned int I = 0; I < f.n_natural(); ++I)
+      if (constrained[I])
+        P.for_row(f.multi_index(I),
+                  I % f.nc,
+                  [&](const unsigned int J, const double) {
+                    coarse_constrained[J] = true;
+                  });
+    // Level unknowns: the kept functions in natural order, owned in
+    // contiguous blocks.
+    const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(communicator);
+    const unsigned int rank    = Utilities::MPI::this_mpi_process(communicator);
+    c->index.assign(c->n_natural(), numbers::invalid_dof_index);
+    for (unsigned int J = 0; J < c->n_natural(); ++J)
+      if (!coarse_constrained[J])
+        c->index[J] = c->n_unknowns++;
+    c->owned.set_size(c->n_unknowns);
+    c->owned.add_range(c->n_unknowns * rank / n_ranks,
+                       c->n_unknowns * (rank + 1) / n_ranks);
+    c->owned.compress();
+
+    // Prolongation from c to f (rows: f's owned unknowns): the pattern,
+    // then the values, over the same rows.
+    const auto for_owned_rows = [&](const auto &action) {
+      for (unsigned int I = 0; I < f.n_natural(); ++I)
+        if (!constrained[I] && f.owned.is_element(f.index[I]))
+          P.for_row(f.multi_index(I),
+                    I % f.nc,
+                    [&](const unsigned int J, const double v) {
+                      if (!coarse_constrained[J])
+                        action(f.index[I], c->index[J], v);
+                    });
+    };
+    DynamicSparsityPattern sp(f.n_unknowns, c->n_unknowns, f.owned);
+    for_owned_rows([&](const types::global_dof_index i,
+                       const types::global_dof_index j,
+                       const double) { sp.add(i, j); });
+    f.prolongation.reinit(f.owned, c->owned, sp, communicator);
+    for_owned_rows([&](const types::global_dof_index i,
+                       const types::global_dof_index j,
+                       const double v) { f.prolongation.set(i, j, v); });
+    f.prolongation.compress(VectorOperation::insert);
+
+    constrained = std::move(coarse_constrained);
+    return c;
   }
 
 

@@ -127,6 +127,13 @@ namespace vesicle_iga
         dealii::types::global_dof_index(unsigned int, unsigned int)> &unknown,
       const dealii::IndexSet                                         &owned,
       const std::function<bool(dealii::types::global_dof_index)> &constrained);
+    /// The next coarser level of @p fine (every direction that can be
+    /// halved is), or nullptr if none can. Sets fine's prolongation, and
+    /// turns @p constrained (per natural index of @p fine) into the flags of
+    /// the coarse level: a coarse function whose fine representation
+    /// touches a constrained function is not kept.
+    std::unique_ptr<Level>
+    coarser_level(Level &fine, std::vector<bool> &constrained) const;
     void
     v_cycle(const unsigned int                           l,
             dealii::TrilinosWrappers::MPI::Vector       &x,
