@@ -137,6 +137,29 @@ namespace vesicle_iga
         direct->initialize(matrix);
         return;
       }
+    AssertThrow(!cahouet_chabard || lumped.size() == matrix.m(),
+                ExcMessage("FlowBlockPreconditioner: set_lumped_operators() "
+                           "was not called"));
+    const std::vector<MatrixRow> rows_C = extract_blocks(matrix);
+    initialize_schur_complement(rows_C);
+    if (stabilized)
+      initialize_viscous_schur(rows_C);
+    initialize_velocity_solver();
+    S_inverse.initialize(S, pressure_amg_data(prm.schur_sweeps));
+
+    const MPI_Comm comm = matrix.get_mpi_communicator();
+    u.reinit(velocity_owned, comm);
+    r_u.reinit(velocity_owned, comm);
+    tmp_u.reinit(velocity_owned, comm);
+    p.reinit(pressure_owned, comm);
+    r_p.reinit(pressure_owned, comm);
+  }
+
+
+  std::vector<MatrixRow>
+  FlowBlockPreconditioner::extract_blocks(
+    const TrilinosWrappers::SparseMatrix &matrix)
+  {
     const MPI_Comm     comm    = matrix.get_mpi_communicator();
     const IndexSet    &owned   = matrix.locally_owned_range_indices();
     const unsigned int nc      = dim + 1;
@@ -187,17 +210,22 @@ namespace vesicle_iga
     make_distributed_matrix(velocity_owned, velocity_owned, comm, rows_A, A);
     make_distributed_matrix(velocity_owned, pressure_owned, comm, rows_B, B);
     make_distributed_matrix(pressure_owned, velocity_owned, comm, rows_D, D);
+    return rows_C;
+  }
 
+
+  void
+  FlowBlockPreconditioner::initialize_schur_complement(
+    const std::vector<MatrixRow> &rows_C)
+  {
+    const MPI_Comm comm = A.get_mpi_communicator();
     // The diagonal that replaces A in the Schur complement: the lumped
     // velocity mass (Cahouet-Chabard) or diag(A) (SIMPLE).
-    AssertThrow(!cahouet_chabard || lumped.size() == matrix.m(),
-                ExcMessage("FlowBlockPreconditioner: set_lumped_operators() "
-                           "was not called"));
     TrilinosWrappers::MPI::Vector minus_inverse_diagonal(velocity_owned, comm);
-    inverse_viscous_mass.assign(n_pressure, 0.);
+    inverse_viscous_mass.assign(pressure_owned.n_elements(), 0.);
     {
       const double *l = cahouet_chabard ? lumped.begin() : nullptr;
-      for (k = 0; k < local_position.size(); ++k)
+      for (std::size_t k = 0; k < local_position.size(); ++k)
         {
           const long position = local_position[k];
           if (position >= 0)
@@ -216,8 +244,8 @@ namespace vesicle_iga
     // added row by row (the patterns differ).
     TrilinosWrappers::SparseMatrix product;
     D.mmult(product, B, minus_inverse_diagonal);
-    std::vector<MatrixRow> rows_S(n_pressure);
-    k = 0;
+    std::vector<MatrixRow> rows_S(pressure_owned.n_elements());
+    std::size_t            k = 0;
     for (const auto i : pressure_owned)
       {
         MatrixRow &row = rows_S[k];
@@ -229,33 +257,29 @@ namespace vesicle_iga
         ++k;
       }
     make_distributed_matrix(pressure_owned, pressure_owned, comm, rows_S, S);
+  }
 
-    if (stabilized)
-      initialize_viscous_schur(rows_C);
 
-    // One null-space vector per velocity component.
+  void
+  FlowBlockPreconditioner::initialize_velocity_solver()
+  {
+    if (velocity_preconditioner)
+      {
+        velocity_preconditioner->initialize(A);
+        return;
+      }
+    // AMG with one near-null-space vector per velocity component.
     TrilinosWrappers::PreconditionAMG::AdditionalData velocity_data;
     velocity_data.elliptic              = prm.velocity_elliptic;
     velocity_data.higher_order_elements = true;
     velocity_data.smoother_sweeps       = prm.velocity_sweeps;
     velocity_data.aggregation_threshold = 0.02;
-    velocity_data.constant_modes.assign(dim,
-                                        std::vector<bool>(n_velocity, false));
-    k = 0;
+    velocity_data.constant_modes.assign(
+      dim, std::vector<bool>(velocity_owned.n_elements(), false));
+    std::size_t k = 0;
     for (const auto i : velocity_owned)
       velocity_data.constant_modes[i % dim][k++] = true;
-    if (velocity_preconditioner)
-      velocity_preconditioner->initialize(A);
-    else
-      A_inverse.initialize(A, velocity_data);
-
-    S_inverse.initialize(S, pressure_amg_data(prm.schur_sweeps));
-
-    u.reinit(velocity_owned, comm);
-    r_u.reinit(velocity_owned, comm);
-    tmp_u.reinit(velocity_owned, comm);
-    p.reinit(pressure_owned, comm);
-    r_p.reinit(pressure_owned, comm);
+    A_inverse.initialize(A, velocity_data);
   }
 
 

@@ -107,6 +107,18 @@ namespace vesicle_iga
     description() const override;
 
   private:
+    /// The blocks A, B, D of @p matrix (with the index sets and local
+    /// positions of velocity and pressure); returns C's owned rows.
+    std::vector<MatrixRow>
+    extract_blocks(const dealii::TrilinosWrappers::SparseMatrix &matrix);
+    /// S = C - D diag^{-1} B, diag the lumped velocity mass
+    /// (cahouet-chabard forms) or diag(A) (simple).
+    void
+    initialize_schur_complement(const std::vector<MatrixRow> &rows_C);
+    /// The velocity block's V-cycle, or AMG with the componentwise
+    /// constant modes.
+    void
+    initialize_velocity_solver();
     /// M_nu + C of stabilized-cahouet-chabard and its AMG.
     void
     initialize_viscous_schur(const std::vector<MatrixRow> &rows_C);
