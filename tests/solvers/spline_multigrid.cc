@@ -113,8 +113,8 @@ void
 solve_periodic()
 {
   const unsigned int        p = 3;
-  std::array<KnotVector, 2> kv{KnotVector::uniform(p, 12, 0., 1., -1, true),
-                               KnotVector::uniform(p, 12, 0., 1.)};
+  std::array<KnotVector, 2> kv{{KnotVector::uniform(p, 12, 0., 1., -1, true),
+                                KnotVector::uniform(p, 12, 0., 1.)}};
   StationaryProblem<2> problem(MPI_COMM_WORLD, SplineSpace<2>(kv), nullptr, 1);
   const BoundarySelection<2>           y_faces("all", "boundary");
   const Functions::ZeroFunction<2>     zero;
