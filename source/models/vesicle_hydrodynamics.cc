@@ -877,16 +877,9 @@ namespace vesicle_iga
 
 
   template <int dim>
-  StepReport
-  VesicleHydrodynamics<dim>::implicit_step(const double dt)
+  std::vector<SecantIteration2>
+  VesicleHydrodynamics<dim>::multiplier_secants(const double dt) const
   {
-    // (H7) at the end of the step instead of the rate laws of (H13): G_i =
-    // (V_i, A_i)(phi_{n+1}) - (V_i(0), A_i(0)) = 0 (relative to |V_i(0)|,
-    // A_i(0): V_i = int phi_i is negative in a box larger than twice the
-    // vesicle) for (lambda_v, lambda_g) of the step, by a secant iteration
-    // started from the rate laws' response dt d(dV/dt, dA/dt)/d(lambda_v,
-    // lambda_g) (the rows of (H13): dV/dt = -(... + lambda_v F_v + lambda_g
-    // F_g)(1), eta_phi dA/dt the same at Y).
     const double eta = membrane.mobility;
     // The rate laws at the state: needed only before a first step has
     // given a secant estimate.
@@ -894,6 +887,7 @@ namespace vesicle_iga
                                            std::vector<std::array<double, 6>>() :
                                            rate_laws(0);
     std::vector<SecantIteration2> secant;
+    secant.reserve(n);
     // The last step's secant estimate, scaled to this step (the response
     // is about proportional to dt while the rate term dominates the step
     // matrix), is closer than the rate laws' once a step has been taken.
@@ -911,17 +905,43 @@ namespace vesicle_iga
         secant.emplace_back(
           std::array<double, 2>{{step_lambda_v[i], step_lambda_g[i]}}, J);
       }
+    return secant;
+  }
+
+
+  template <int dim>
+  std::vector<std::array<double, 2>>
+  VesicleHydrodynamics<dim>::constraint_errors(
+    const TrilinosWrappers::MPI::Vector *fields) const
+  {
+    const auto geometry
+      = integrate_geometry(std::vector<Point<dim>>(n), false, fields);
+    std::vector<std::array<double, 2>> errors(n);
+    for (unsigned int i = 0; i < n; ++i)
+      errors[i]
+        = {{geometry[VesicleGeometry<dim>::n_sums * i + 1] - volume_0[i],
+            geometry[VesicleGeometry<dim>::n_sums * i] - area_0[i]}};
+    return errors;
+  }
+
+
+  template <int dim>
+  StepReport
+  VesicleHydrodynamics<dim>::implicit_step(const double dt)
+  {
+    // (H7) at the end of the step instead of the rate laws of (H13): G_i =
+    // (V_i, A_i)(phi_{n+1}) - (V_i(0), A_i(0)) = 0 (relative to |V_i(0)|,
+    // A_i(0): V_i = int phi_i is negative in a box larger than twice the
+    // vesicle) for (lambda_v, lambda_g) of the step, by a secant iteration
+    // started from the rate laws' response dt d(dV/dt, dA/dt)/d(lambda_v,
+    // lambda_g) (the rows of (H13): dV/dt = -(... + lambda_v F_v + lambda_g
+    // F_g)(1), eta_phi dA/dt the same at Y).
+    std::vector<SecantIteration2> secant = multiplier_secants(dt);
     // The constraint errors at the start of the step (at most the
     // tolerance): the part J^-1 e_n of the step's multipliers that removes
     // them is not carried into the next step (accept_step).
-    const auto start_geometry
-      = integrate_geometry(std::vector<Point<dim>>(n), false);
-    std::vector<std::array<double, 2>> start_errors(n);
-    for (unsigned int i = 0; i < n; ++i)
-      start_errors[i]
-        = {{start_geometry[VesicleGeometry<dim>::n_sums * i + 1] - volume_0[i],
-            start_geometry[VesicleGeometry<dim>::n_sums * i] - area_0[i]}};
-    const auto &dofs = flow_model->dofs();
+    const auto  start_errors = constraint_errors(nullptr);
+    const auto &dofs         = flow_model->dofs();
     StepReport  report;
     for (unsigned int iteration = 1;; ++iteration)
       {
@@ -931,21 +951,13 @@ namespace vesicle_iga
         TrilinosWrappers::MPI::Vector trial(dofs.locally_owned_dofs(),
                                             dofs.locally_relevant_dofs(),
                                             dofs.get_mesh().get_communicator());
-        trial = flow_model->get_stepper().next_solution();
-        const auto geometry
-          = integrate_geometry(std::vector<Point<dim>>(n), false, &trial);
-        double worst     = 0;
-        auto   residuals = std::vector<std::array<double, 2>>(n);
+        trial                = flow_model->get_stepper().next_solution();
+        const auto residuals = constraint_errors(&trial);
+        double     worst     = 0;
         for (unsigned int i = 0; i < n; ++i)
-          {
-            const double area = geometry[VesicleGeometry<dim>::n_sums * i];
-            const double volume
-              = geometry[VesicleGeometry<dim>::n_sums * i + 1];
-            residuals[i] = {{volume - volume_0[i], area - area_0[i]}};
-            worst        = std::max({worst,
-                                     std::abs(residuals[i][0] / volume_0[i]),
-                                     std::abs(residuals[i][1] / area_0[i])});
-          }
+          worst = std::max({worst,
+                            std::abs(residuals[i][0] / volume_0[i]),
+                            std::abs(residuals[i][1] / area_0[i])});
         if (worst <= membrane.multiplier_tolerance)
           {
             solved_step_response.resize(n);

@@ -22,6 +22,7 @@ namespace vesicle_iga
 {
   template <int dim>
   class GramSolver;
+  class SecantIteration2;
 
   /// What is measured of one vesicle (spec 4.5, 4.12).
   struct VesicleMeasures
@@ -223,6 +224,17 @@ namespace vesicle_iga
     /// ends on V_i(0), A_i(0) (implicit multipliers).
     StepReport
     implicit_step(const double dt);
+    /// Per vesicle the secant iteration of implicit_step() for
+    /// (lambda_v, lambda_g), started from the step's multipliers with the
+    /// last step's response scaled to @p dt, or before a first step the
+    /// rate laws' dt d(dV/dt, dA/dt)/d(lambda_v, lambda_g).
+    std::vector<SecantIteration2>
+    multiplier_secants(const double dt) const;
+    /// Per vesicle (V_i - V_i(0), A_i - A_i(0)) of @p fields (nullptr: the
+    /// current fields).
+    std::vector<std::array<double, 2>>
+    constraint_errors(
+      const dealii::TrilinosWrappers::MPI::Vector *fields) const;
     /// Through the increments' constraints: the residual of every term
     /// with phase-field rows but the multipliers' at zero rate (R_0), and
     /// that of the multipliers' term with (lambda_g, lambda_v) = (1, 0)
