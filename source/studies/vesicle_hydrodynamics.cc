@@ -211,6 +211,18 @@ namespace vesicle_iga
       void
       note_initial_defects(
         const std::vector<InitialVesicle<dim>> &shapes) const;
+      /// Re, the inverse-estimate constant and the time scale of tau_M.
+      FlowCoefficients<dim>
+      flow_coefficients() const;
+      /// phi_0 of each vesicle of @p shapes, mirrored in the walls if
+      /// asked for.
+      std::vector<std::function<double(const Point<dim> &)>>
+      initial_phases(const std::vector<InitialVesicle<dim>> &shapes) const;
+      /// The run's size and each vesicle's start on rank 0.
+      void
+      print_start(const VesicleHydrodynamics<dim>        &model,
+                  const SplineSpace<dim>                 &space,
+                  const std::vector<InitialVesicle<dim>> &shapes) const;
 
       RunContext                         &context;
       BoxSpaceParameters                  box;
@@ -557,16 +569,7 @@ namespace vesicle_iga
         prefix, membrane.reynolds_number, box.periodic, level_fixed);
       IncompressibleFlowParameters parameters = flow_parameters;
       parameters.fix_pressure_mean = boundaries.fix_pressure_mean(level_fixed);
-      FlowCoefficients<dim> coefficients;
-      coefficients.reynolds_number           = membrane.reynolds_number;
-      coefficients.inverse_estimate_constant = 6. * std::pow(degree, 4);
-      // Adaptive steps need tau_M independent of dt (doc/hydrodynamics.md).
-      coefficients.stabilisation_time_scale
-        = stabilisation_time_scale > 0 ?
-            stabilisation_time_scale :
-            (loop_parameters.step.mode == "adaptive" ?
-               loop_parameters.step.initial_dt :
-               0.);
+      const FlowCoefficients<dim>      coefficients = flow_coefficients();
       VesicleHydrodynamics<dim>        model(context.communicator,
                                       space,
                                       membrane,
@@ -577,17 +580,10 @@ namespace vesicle_iga
                                       timer,
                                       phase_field_blocks);
       std::vector<InitialVesicle<dim>> shapes;
-      std::vector<std::function<double(const Point<dim> &)>> phases;
       for (const auto &v : vesicles)
         shapes.emplace_back(
           v.centre, v.radius, v.reduced, v.angle, stretch, distance);
-      const auto [lower, upper, mirror] = walls();
-      for (const auto &shape : shapes)
-        phases.push_back([&, this](const Point<dim> &x) {
-          return mirrored_phase ? shape.mirrored_phase_field(
-                   x, membrane.epsilon, lower, upper, mirror) :
-                                  shape.phase_field(x, membrane.epsilon);
-        });
+      const auto phases = initial_phases(shapes);
       {
         TimerOutput::Scope scope(timer, "setup");
         model.set_initial_state(*parse_formula<dim>(initial_velocity,
@@ -626,6 +622,56 @@ namespace vesicle_iga
         context.pcout << "restart from " << loop_parameters.restart_file
                       << ": step " << loop.step() << ", t = " << model.time()
                       << ", dt = " << loop.next_dt() << std::endl;
+      print_start(model, space, shapes);
+      note_initial_defects(shapes);
+      loop.run(model);
+    }
+
+
+    template <int dim>
+    FlowCoefficients<dim>
+    VesicleHydrodynamicsStudy<dim>::flow_coefficients() const
+    {
+      FlowCoefficients<dim> coefficients;
+      coefficients.reynolds_number           = membrane.reynolds_number;
+      coefficients.inverse_estimate_constant = 6. * std::pow(degree, 4);
+      // Adaptive steps need tau_M independent of dt (doc/hydrodynamics.md).
+      coefficients.stabilisation_time_scale
+        = stabilisation_time_scale > 0 ?
+            stabilisation_time_scale :
+            (loop_parameters.step.mode == "adaptive" ?
+               loop_parameters.step.initial_dt :
+               0.);
+      return coefficients;
+    }
+
+
+    template <int dim>
+    std::vector<std::function<double(const Point<dim> &)>>
+    VesicleHydrodynamicsStudy<dim>::initial_phases(
+      const std::vector<InitialVesicle<dim>> &shapes) const
+    {
+      std::vector<std::function<double(const Point<dim> &)>> phases;
+      const auto [lower, upper, mirror] = walls();
+      for (const auto &shape : shapes)
+        phases.push_back(
+          [&shape, lower = lower, upper = upper, mirror = mirror, this](
+            const Point<dim> &x) {
+            return mirrored_phase ? shape.mirrored_phase_field(
+                     x, membrane.epsilon, lower, upper, mirror) :
+                                    shape.phase_field(x, membrane.epsilon);
+          });
+      return phases;
+    }
+
+
+    template <int dim>
+    void
+    VesicleHydrodynamicsStudy<dim>::print_start(
+      const VesicleHydrodynamics<dim>        &model,
+      const SplineSpace<dim>                 &space,
+      const std::vector<InitialVesicle<dim>> &shapes) const
+    {
       context.pcout << "Vesicle hydrodynamics (spec Part H, mixed-free): "
                     << vesicles.size() << " vesicle(s), degree " << degree
                     << ", " << space.n_elements() << " elements, "
@@ -642,8 +688,6 @@ namespace vesicle_iga
                       << shapes[i].actual_reduced_measure() << ", lambda_g "
                       << model.area_multipliers()[i] << ", lambda_v "
                       << model.volume_multipliers()[i] << std::endl;
-      note_initial_defects(shapes);
-      loop.run(model);
     }
   } // namespace
 
