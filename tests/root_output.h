@@ -5,6 +5,7 @@
 #include <deal.II/base/mpi.h>
 
 #include <fstream>
+#include <string>
 
 /// Whether this is rank 0, which writes the test's output.
 inline bool
@@ -18,4 +19,11 @@ inline std::ofstream
 root_output()
 {
   return std::ofstream(root_rank() ? "output" : "/dev/null");
+}
+
+/// "ok" or "FAILED", the verdict of a check in a test's output.
+inline std::string
+verdict(const bool ok)
+{
+  return ok ? "ok" : "FAILED";
 }

@@ -22,9 +22,10 @@ namespace vesicle_iga
 
   namespace
   {
-    /// Per vesicle: A (H12c), V, and the zeroth, first and second moments
-    /// of the indicator c = (1 + phi) / 2 (spec 4.12). The sums: 0 A, 1 V,
-    /// 2 int c, 3-4 the x and y first moments, 5-7 the x-y second moments,
+    /// Per vesicle: A (H12c), V (int phi of (H12c), or int chi(phi) with
+    /// 'Volume multiplier = indicator'), and the zeroth, first and second
+    /// moments of the indicator c = (1 + phi) / 2 (spec 4.12). The sums: 0 A, 1
+    /// V, 2 int c, 3-4 the x and y first moments, 5-7 the x-y second moments,
     /// 8-11 the circular moments of periodic x and y, in 3D 12 the z first
     /// moment and 13-14 the circular moments of periodic z.
     template <int dim>
@@ -40,9 +41,11 @@ namespace vesicle_iga
       VesicleGeometry(const unsigned int phi,
                       const double       eps,
                       const PeriodicBox &box,
-                      const Point<dim>  &reference)
+                      const Point<dim>  &reference,
+                      const bool         indicator_volume)
         : phi(phi)
         , eps(eps)
+        , indicator_volume(indicator_volume)
         , box(box)
         , reference(reference)
       {}
@@ -95,7 +98,8 @@ namespace vesicle_iga
               }
             sums[0]
               += (0.5 * eps * g2 + (p * p - 1) * (p * p - 1) / (4 * eps)) * w;
-            sums[1] += p * w;
+            sums[1]
+              += (indicator_volume ? membrane::smoothed_indicator(p) : p) * w;
             sums[2] += c * w;
             sums[3] += c * r[0] * w;
             sums[4] += c * r[1] * w;
@@ -110,6 +114,7 @@ namespace vesicle_iga
     private:
       const unsigned int           phi;
       const double                 eps;
+      const bool                   indicator_volume;
       const PeriodicBox            box;
       const Point<dim>             reference;
       InputHandle                  value;
@@ -565,8 +570,12 @@ namespace vesicle_iga
   {
     std::vector<std::unique_ptr<Integrand<dim>>> owned;
     for (unsigned int i = 0; i < n; ++i)
-      owned.push_back(std::make_unique<VesicleGeometry<dim>>(
-        phase(i), membrane.epsilon, periodic_box, references[i]));
+      owned.push_back(
+        std::make_unique<VesicleGeometry<dim>>(phase(i),
+                                               membrane.epsilon,
+                                               periodic_box,
+                                               references[i],
+                                               indicator_volume()));
     for (unsigned int i = 0; with_bending_energy && i < n; ++i)
       owned.push_back(
         std::make_unique<HydrodynamicBendingEnergy<dim>>(phase(i), membrane));
@@ -716,8 +725,12 @@ namespace vesicle_iga
     std::vector<Integrand<dim> *>                list;
     for (unsigned int i = 0; i < n; ++i)
       {
-        owned.push_back(std::make_unique<VesicleGeometry<dim>>(
-          phase(i), membrane.epsilon, periodic_box, Point<dim>()));
+        owned.push_back(
+          std::make_unique<VesicleGeometry<dim>>(phase(i),
+                                                 membrane.epsilon,
+                                                 periodic_box,
+                                                 Point<dim>(),
+                                                 indicator_volume()));
         list.push_back(owned.back().get());
       }
     AssemblyState state;
@@ -742,7 +755,8 @@ namespace vesicle_iga
           v.compress(VectorOperation::insert);
         TrilinosWrappers::MPI::Vector y;
         phase_gram->solve(x[1], y);
-        // X(1) and X(Y) for X = R_0, F_g, F_v.
+        // X(1) and X(Y) for X = R_0, F_g, F_v: the rows of dV/dt = -(R_0 +
+        // lambda_g F_g + lambda_v F_v)(1) and eta_phi dA/dt.
         std::array<double, 6> sums;
         for (unsigned int k = 0; k < 3; ++k)
           {
@@ -756,6 +770,22 @@ namespace vesicle_iga
         Utilities::MPI::sum(ArrayView<const double>(sums.data(), 3),
                             dofs.get_mesh().get_communicator(),
                             ArrayView<double>(sums.data(), 3));
+        if (indicator_volume())
+          {
+            // V_i = int chi(phi_i) with chi' = c delta_eps: dV/dt = c (beta,
+            // d_t phi_i) = -c F_v[d_t phi_i] / eta_phi = (c / eta_phi) (R_0 +
+            // lambda_g F_g + lambda_v F_v)(Z), Z = M^-1 F_v, so that the
+            // matrix below is [F_v M^-1 F_v, F_g M^-1 F_v; F_v M^-1 F_g, F_g
+            // M^-1 F_g] up to the factor -c / eta_phi of its first row: a
+            // Gram matrix, whose determinant is >= 0 by Cauchy-Schwarz and 0
+            // only where F_v and F_g are parallel.
+            TrilinosWrappers::MPI::Vector z;
+            phase_gram->solve(x[2], z);
+            const double c
+              = membrane::indicator_slope_per_delta(membrane.epsilon) / eta;
+            for (unsigned int k = 0; k < 3; ++k)
+              sums[k] = -c * (x[k] * z);
+          }
         const double area   = geometry[VesicleGeometry<dim>::n_sums * i];
         const double volume = geometry[VesicleGeometry<dim>::n_sums * i + 1];
         // [F_v(1) F_g(1); F_v(Y) F_g(Y)] (lambda_v, lambda_g) = b: the laws
@@ -782,31 +812,32 @@ namespace vesicle_iga
         const auto [a_vv, a_vg, a_gv, a_gg, b_v, b_g] = laws[i];
         // With beta = 1 (Volume multiplier = domain) and the pointwise f
         // this was the Gram determinant |Omega| int f^2 - (int f)^2 of spec
-        // 4.6. With the membrane weight beta = delta_eps it is not a Gram
-        // determinant: for f = eps kappa phi' along the membrane and beta ~
-        // phi'^2 across it, det ~ m_2^2 L int kappa^2 - m_1 m_3 (int
-        // kappa)^2 with m_k = int phi'^k, and m_1 m_3 / m_2^2 = 6/5 for the
-        // tanh profile, so det changes sign near a circle (ellipses: chi
-        // about 0.93 in the sharp limit, between 0.96 and 0.99 at eps / R_0
-        // = 1/8; doc/hydrodynamics.md, "What is missing"). A negative det
-        // still holds both rates of (H13); near zero the multipliers
-        // diverge.
-        const double det   = a_vv * a_gg - a_vg * a_gv;
-        const double scale = a_vv * a_gg;
-        AssertThrow(std::abs(det) > 1e-2 * std::abs(scale),
-                    ExcMessage(
-                      "(H13) is singular for vesicle " + std::to_string(i + 1)
-                      + ": its determinant is " + std::to_string(det / scale)
-                      + " of int beta int f^2"
-                      + (membrane.membrane_volume_multiplier ?
-                           " (with 'Volume multiplier = membrane' it changes "
-                           "sign near a circle or sphere, at a reduced area "
-                           "between about 0.93 and 0.99 by eps / R_0, "
-                           "where the volume and area rates cannot be held "
-                           "independently; use "
-                           "'Volume multiplier = domain' or a smaller "
-                           "reduced area)" :
-                           " (f is nearly constant: no interface)")));
+        // 4.6; with 'indicator' it is a Gram determinant too (rate_laws).
+        // With the membrane weight beta = delta_eps and V = int phi it is
+        // not: for f = eps kappa phi' along the membrane and beta ~ phi'^2
+        // across it, det ~ m_2^2 L int kappa^2 - m_1 m_3 (int kappa)^2 with
+        // m_k = int phi'^k, and m_1 m_3 / m_2^2 = 6/5 for the tanh profile,
+        // so det changes sign near a circle (ellipses: chi about 0.93 in
+        // the sharp limit; doc/hydrodynamics.md, "A Gram form of (H13)").
+        // A negative det still holds both rates of (H13); near zero the
+        // multipliers diverge.
+        const double det       = a_vv * a_gg - a_vg * a_gv;
+        const double scale     = a_vv * a_gg;
+        using VolumeMultiplier = MembraneCoefficients::VolumeMultiplier;
+        AssertThrow(
+          std::abs(det) > 1e-2 * std::abs(scale),
+          ExcMessage(
+            "(H13) is singular for vesicle " + std::to_string(i + 1)
+            + ": its determinant is " + std::to_string(det / scale)
+            + " of the product of its diagonal"
+            + (membrane.volume_multiplier == VolumeMultiplier::membrane ?
+                 " (with 'Volume multiplier = membrane' it changes sign "
+                 "between an ellipse and the circle, near a reduced area of "
+                 "0.94 (0.93 to 0.99 by eps / R_0 and the profile); use "
+                 "'Volume multiplier = indicator', whose (H13) is a Gram "
+                 "system)" :
+                 " (the area and volume variations are nearly parallel: no "
+                 "interface, or a vesicle thinner than the interface)")));
         const double v            = (a_gg * b_v - a_vg * b_g) / det;
         const double g            = (a_vv * b_g - a_gv * b_v) / det;
         lambda_v_previous_rate[i] = lambda_v_rate[i];
@@ -1085,11 +1116,13 @@ namespace vesicle_iga
                                   const std::string &prefix) const
   {
     flow_model->save(c, prefix + ".flow");
-    c.vectors[prefix + ".initial_areas"]           = area_0;
-    c.vectors[prefix + ".initial_volumes"]         = volume_0;
-    c.vectors[prefix + ".area_multipliers"]        = lambda_g;
-    c.vectors[prefix + ".volume_multipliers"]      = lambda_v;
-    c.vectors[prefix + ".area_multiplier_rates"]   = lambda_g_rate;
+    c.vectors[prefix + ".initial_areas"]   = area_0;
+    c.vectors[prefix + ".initial_volumes"] = volume_0;
+    // Which volume volume_0 measures: int phi (0) or int chi(phi) (1).
+    c.scalars[prefix + ".indicator_volume"]      = indicator_volume() ? 1. : 0.;
+    c.vectors[prefix + ".area_multipliers"]      = lambda_g;
+    c.vectors[prefix + ".volume_multipliers"]    = lambda_v;
+    c.vectors[prefix + ".area_multiplier_rates"] = lambda_g_rate;
     c.vectors[prefix + ".volume_multiplier_rates"] = lambda_v_rate;
     c.vectors[prefix + ".area_multiplier_previous_rates"]
       = lambda_g_previous_rate;
@@ -1132,6 +1165,19 @@ namespace vesicle_iga
     };
     get("initial_areas", area_0);
     get("initial_volumes", volume_0);
+    // Checkpoints written before 'indicator' existed hold int phi.
+    const bool stored_indicator
+      = c.scalars.count(prefix + ".indicator_volume")
+        && c.scalar(prefix + ".indicator_volume") == 1.;
+    check_input(stored_indicator == indicator_volume(),
+                "Time stepping/Restart from",
+                c.source,
+                std::string("a checkpoint whose initial volumes are those of "
+                            "this run's 'Volume multiplier' (the checkpoint "
+                            "holds V_i = ")
+                  + (stored_indicator ? "int chi(phi_i), of 'indicator'" :
+                                        "int phi_i, of 'membrane' or 'domain'")
+                  + ")");
     get("area_multipliers", lambda_g);
     get("volume_multipliers", lambda_v);
     // Checkpoints written before the rates were kept: none (lagged once).

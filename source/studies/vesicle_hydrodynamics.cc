@@ -320,8 +320,14 @@ namespace vesicle_iga
       membrane.capillary_number   = prm.get_double("Capillary number");
       membrane.interaction_number = prm.get_double("Interaction number");
       membrane.interaction        = prm.get_bool("Interaction");
-      membrane.membrane_volume_multiplier
-        = prm.get("Volume multiplier") == "membrane";
+      {
+        using VolumeMultiplier   = MembraneCoefficients::VolumeMultiplier;
+        const std::string volume = prm.get("Volume multiplier");
+        membrane.volume_multiplier
+          = volume == "domain"   ? VolumeMultiplier::domain :
+            volume == "membrane" ? VolumeMultiplier::membrane :
+                                   VolumeMultiplier::indicator;
+      }
       membrane.extrapolated_multipliers
         = prm.get("Global multipliers") == "extrapolated";
       membrane.implicit_multipliers
@@ -784,17 +790,23 @@ namespace vesicle_iga
         prm.declare_entry(
           "Volume multiplier",
           "membrane",
-          Patterns::Selection("membrane|domain"),
-          "Where the volume multiplier lambda_v of (H1), (H13) acts: "
-          "membrane (-lambda_v delta_eps(phi_i) with delta_eps of (H12b), this "
-          "project's default) or domain (-lambda_v everywhere, the source's "
-          "(H1)). With 'domain' phi_i rises off -1 in the whole fluid, by "
-          "about lambda_v / (4 / (Re Ca eps^3) + 2 lambda_g / eps), and the "
-          "volume constraint then trades the vesicle's enclosed area against "
-          "that far field: prm/doublet-shear-quick.prm loses 12 % of the "
-          "area inside its zero level sets in 30 steps with 'domain', while "
-          "V_i is held to 1e-3 (doc/hydrodynamics.md, \"Volume "
-          "multiplier\").");
+          Patterns::Selection("membrane|indicator|domain"),
+          "Where the volume multiplier lambda_v of (H1), (H13) acts and which "
+          "volume it holds. membrane: -lambda_v delta_eps(phi_i) with "
+          "delta_eps of (H12b), V_i = int phi_i (this project's default). "
+          "indicator: the same weight, V_i = int chi(phi_i) with the smoothed "
+          "indicator chi = 15/8 (phi - 2 phi^3 / 3 + phi^5 / 5), whose "
+          "variation is that weight, so that (H13) is a Gram system, well "
+          "posed for every shape; with 'membrane' its determinant changes "
+          "sign near a circle or sphere and the multipliers diverge there "
+          "(doc/hydrodynamics.md, \"A Gram form of (H13)\"). domain: "
+          "-lambda_v everywhere, V_i = int phi_i, the source's (H1); phi_i "
+          "then rises off -1 in the whole fluid, by about lambda_v / (4 / (Re "
+          "Ca eps^3) + 2 lambda_g / eps), and the volume constraint trades the "
+          "vesicle's enclosed area against that far field: "
+          "prm/doublet-shear-quick.prm loses 12 % of the area inside its zero "
+          "level sets in 30 steps with 'domain', while V_i is held to 1e-3 "
+          "(doc/hydrodynamics.md, \"Volume multiplier\").");
         prm.declare_entry(
           "Phase field boundary condition",
           "zero normal derivative",

@@ -12,7 +12,7 @@ namespace vesicle_iga
     const MembraneCoefficients &coefficients)
     : eps(coefficients.epsilon)
     , eta(coefficients.mobility)
-    , local(coefficients.membrane_volume_multiplier)
+    , local(coefficients.local_volume_multiplier())
   {
     using D = Derivative<dim>;
     inputs.push_back({phi, D::value});

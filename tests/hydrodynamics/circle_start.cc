@@ -49,73 +49,22 @@ using namespace dealii;
 
 namespace
 {
-  std::string
-  verdict(const bool ok)
-  {
-    return ok ? "ok" : "FAILED";
-  }
-
-  struct Start
-  {
-    double lambda_g = 0, lambda_v = 0, area_change = 0, volume_change = 0;
-  };
+  using Start = VesicleStart;
 
   /// The multipliers at t = 0 and, if @p step, the relative changes of A
-  /// and V over one step of 1e-3.
+  /// and V over one step of 1e-3. The radial distance is the exact one for
+  /// a circle (the equilibrium profile); the level-set one has no jump at
+  /// an ellipse's centre.
   Start
   start(const double chi, const unsigned int per_unit, const double step)
   {
-    IncompressibleFlowParameters parameters;
-    parameters.solver.method                    = "fgmres-block";
-    parameters.solver.tolerance                 = 1e-8;
-    parameters.solver.max_iterations            = 400;
-    parameters.solver.block.schur_approximation = "stabilized-cahouet-chabard";
-    parameters.quadrature_points                = 5;
-    parameters.newton.relative_tolerance        = 1e-8;
-    parameters.newton.absolute_tolerance        = 1e-12;
-    TimerOutput          timer(MPI_COMM_WORLD,
-                      std::cout,
-                      TimerOutput::never,
-                      TimerOutput::wall_times);
-    const SplineSpace<2> space(cubic_box_knots(4 * per_unit, -2., 2.));
-    MembraneCoefficients membrane;
-    membrane.epsilon = 0.125;
-    VesicleHydrodynamics<2> model(
-      MPI_COMM_WORLD,
-      space,
-      membrane,
-      cubic_flow_coefficients(membrane),
-      strong_walls(std::make_shared<Functions::ZeroFunction<2>>(3)),
-      parameters,
-      1,
-      timer);
-    // The radial distance is the exact one for a circle (the equilibrium
-    // profile); the level-set one has no jump at an ellipse's centre.
-    const InitialVesicle<2> vesicle(
-      Point<2>(),
-      1.,
-      chi,
-      90,
-      InitialVesicle<2>::StretchFormula::exact,
-      chi == 1 ? InitialVesicle<2>::DistanceFormula::radial :
-                 InitialVesicle<2>::DistanceFormula::level_set);
-    model.set_initial_state(
-      Functions::ZeroFunction<2>(2), {[&vesicle](const Point<2> &x) {
-        return vesicle.mirrored_phase_field(
-          x, 0.125, Point<2>(-2, -2), Point<2>(2, 2), {{true, true}});
-      }});
-    Start s;
-    s.lambda_g = model.area_multipliers()[0];
-    s.lambda_v = model.volume_multipliers()[0];
-    if (step > 0)
-      {
-        model.solve_step(step);
-        model.accept_step();
-        const auto m    = model.measure()[0];
-        s.area_change   = std::abs(m.area / model.initial_areas()[0] - 1);
-        s.volume_change = std::abs(m.volume / model.initial_volumes()[0] - 1);
-      }
-    return s;
+    return start_from_rest(chi,
+                           per_unit,
+                           MembraneCoefficients::VolumeMultiplier::membrane,
+                           chi == 1 ?
+                             InitialVesicleBase::DistanceFormula::radial :
+                             InitialVesicleBase::DistanceFormula::level_set,
+                           step);
   }
 } // namespace
 

@@ -147,4 +147,77 @@ namespace vesicle_iga
     return {double(r.krylov_iterations) / r.newton_iterations,
             resting.model.measure()[0]};
   }
+  /// Multipliers and constraint changes of a vesicle started from rest.
+  struct VesicleStart
+  {
+    double lambda_g = 0, lambda_v = 0, area_change = 0, volume_change = 0;
+  };
+
+  /// A vesicle of R_0 = 1 and reduced area @p chi (major axis vertical) at
+  /// the centre of [-2, 2]^2 with 4 @p per_unit cubic elements per
+  /// direction, eps = 0.125, phi_0 on @p distance mirrored in the walls
+  /// (compatible with d phi / dn = 0), u = 0 strongly on every wall, FGMRES
+  /// and Newton to 1e-8: its multipliers of (H13) at t = 0 and, if @p step
+  /// > 0, the relative changes of A and V over one step of that size (the
+  /// set-up of tests/hydrodynamics/circle_start and volume_indicator).
+  inline VesicleStart
+  start_from_rest(const double                                 chi,
+                  const unsigned int                           per_unit,
+                  const MembraneCoefficients::VolumeMultiplier form,
+                  const InitialVesicleBase::DistanceFormula    distance,
+                  const double                                 step)
+  {
+    IncompressibleFlowParameters parameters;
+    parameters.solver.method                    = "fgmres-block";
+    parameters.solver.tolerance                 = 1e-8;
+    parameters.solver.max_iterations            = 400;
+    parameters.solver.block.schur_approximation = "stabilized-cahouet-chabard";
+    parameters.quadrature_points                = 5;
+    parameters.newton.relative_tolerance        = 1e-8;
+    parameters.newton.absolute_tolerance        = 1e-12;
+    dealii::TimerOutput  timer(MPI_COMM_WORLD,
+                              std::cout,
+                              dealii::TimerOutput::never,
+                              dealii::TimerOutput::wall_times);
+    const SplineSpace<2> space(cubic_box_knots(4 * per_unit, -2., 2.));
+    MembraneCoefficients membrane;
+    membrane.epsilon           = 0.125;
+    membrane.volume_multiplier = form;
+    VesicleHydrodynamics<2> model(
+      MPI_COMM_WORLD,
+      space,
+      membrane,
+      cubic_flow_coefficients(membrane),
+      strong_walls(std::make_shared<dealii::Functions::ZeroFunction<2>>(3)),
+      parameters,
+      1,
+      timer);
+    const InitialVesicle<2> vesicle(dealii::Point<2>(),
+                                    1.,
+                                    chi,
+                                    90,
+                                    InitialVesicleBase::StretchFormula::exact,
+                                    distance);
+    model.set_initial_state(dealii::Functions::ZeroFunction<2>(2),
+                            {[&vesicle](const dealii::Point<2> &x) {
+                              return vesicle.mirrored_phase_field(
+                                x,
+                                0.125,
+                                dealii::Point<2>(-2, -2),
+                                dealii::Point<2>(2, 2),
+                                {{true, true}});
+                            }});
+    VesicleStart s;
+    s.lambda_g = model.area_multipliers()[0];
+    s.lambda_v = model.volume_multipliers()[0];
+    if (step > 0)
+      {
+        model.solve_step(step);
+        model.accept_step();
+        const auto m    = model.measure()[0];
+        s.area_change   = std::abs(m.area / model.initial_areas()[0] - 1);
+        s.volume_change = std::abs(m.volume / model.initial_volumes()[0] - 1);
+      }
+    return s;
+  }
 } // namespace vesicle_iga

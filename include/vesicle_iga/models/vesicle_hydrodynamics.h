@@ -211,12 +211,22 @@ namespace vesicle_iga
     drop_unsaved_state() override;
 
   private:
+    /// Whether V_i is int chi(phi_i) ('Volume multiplier = indicator')
+    /// rather than int phi_i.
+    bool
+    indicator_volume() const
+    {
+      return membrane.volume_multiplier
+             == MembraneCoefficients::VolumeMultiplier::indicator;
+    }
     /// Solve (H13) for every vesicle with the current fields; @p dt: the
     /// step just taken (0: no relaxation terms, the initial state).
     void
     update_multipliers(const double dt);
     /// (H13) of every vesicle as [F_v(1) F_g(1); F_v(Y) F_g(Y)] (lambda_v,
-    /// lambda_g) = b (row-major matrix, then b) from the current fields;
+    /// lambda_g) = b (row-major matrix, then b) from the current fields
+    /// (with 'indicator' the first row is -(c / eta_phi) [F_v(Z) F_g(Z)],
+    /// Z = M^-1 F_v);
     /// @p dt: the step just taken (0: no relaxation terms).
     std::vector<std::array<double, 6>>
     rate_laws(const double dt) const;

@@ -24,13 +24,32 @@ namespace vesicle_iga
     double epsilon            = 1. / 16;
     /// Whether the interaction energy (H10) acts.
     bool interaction = true;
-    /// Where the volume multiplier acts in (H1): true (this project's
-    /// default) on the membrane only, -lambda_v delta_eps(phi) with
-    /// delta_eps of (H12b); false as in the source, -lambda_v on the whole
-    /// domain, which lifts phi_i off -1 everywhere ("fog") and so moves
-    /// volume between the far field and the vesicle (doc/hydrodynamics.md,
-    /// "Volume multiplier").
-    bool membrane_volume_multiplier = true;
+    /// The volume multiplier lambda_v of (H1) and the volume V_i it holds
+    /// ("Volume multiplier"):
+    /// - domain: -lambda_v on the whole domain and V_i = int phi_i, the
+    ///   source's (H1), (H12c); it lifts phi_i off -1 everywhere ("fog")
+    ///   and so moves volume between the far field and the vesicle;
+    /// - membrane (default): -lambda_v delta_eps(phi) with delta_eps of
+    ///   (H12b), V_i = int phi_i; (H13) is then not a Gram system, and its
+    ///   determinant changes sign near a circle or sphere;
+    /// - indicator: -lambda_v delta_eps(phi) as membrane, V_i = int
+    ///   chi(phi_i) with chi' proportional to delta_eps
+    ///   (membrane::smoothed_indicator), so that (H13) is a Gram system,
+    ///   well posed for every shape that is not a circle or sphere.
+    /// doc/hydrodynamics.md, "Volume multiplier" and "A Gram form of (H13)".
+    enum class VolumeMultiplier
+    {
+      domain,
+      membrane,
+      indicator
+    };
+    VolumeMultiplier volume_multiplier = VolumeMultiplier::membrane;
+    /// Whether lambda_v acts on the membrane only (membrane, indicator).
+    bool
+    local_volume_multiplier() const
+    {
+      return volume_multiplier != VolumeMultiplier::domain;
+    }
     /// Which values of the global multipliers a step uses: true (this
     /// project's default) the (H13) values of the last accepted step
     /// extrapolated linearly to the end of the step (but where their rate
@@ -101,6 +120,30 @@ namespace vesicle_iga
     volume_multiplier_weight(const T &phi, const double eps, const bool local)
     {
       return local ? surface_delta(phi, eps) : T(1.);
+    }
+
+    /// The smoothed indicator chi(phi) = 15/8 (phi - 2 phi^3 / 3 + phi^5 / 5)
+    /// whose volume int chi(phi_i) 'Volume multiplier = indicator' holds:
+    /// chi(+-1) = +-1 as phi, chi odd (a symmetric profile encloses the
+    /// same volume as with int phi), and chi'(phi) = 15/8 (1 - phi^2)^2 =
+    /// indicator_slope_per_delta(eps) delta_eps(phi) of (H12b), so that the
+    /// rate of int chi(phi_i) is the membrane weight of lambda_v tested
+    /// with d_t phi_i, and (H13) becomes a Gram system. chi' >= 0 also
+    /// beyond |phi| = 1.
+    template <typename T>
+    inline T
+    smoothed_indicator(const T &phi)
+    {
+      const T p2 = phi * phi;
+      return 15. / 8. * phi * (1. - p2 * (2. / 3.) + p2 * p2 * 0.2);
+    }
+
+    /// chi'(phi) / delta_eps(phi) = 15/8 * 4 sqrt(2) eps / 3 =
+    /// 5 eps / sqrt(2).
+    inline double
+    indicator_slope_per_delta(const double eps)
+    {
+      return 5. * eps / std::sqrt(2.);
     }
 
     /// B(phi) = (phi^2 - 1)^2 / eps of (H8).
