@@ -162,7 +162,6 @@ main(int argc, char *argv[])
   const double per_newton_stabilized
     = double(stabilized.krylov) / stabilized.newton;
 
-  const auto verdict = [](const bool ok) { return ok ? "ok" : "FAILED"; };
   out << "block-preconditioned run equals the direct run (1e-7): "
       << verdict(difference(block, direct) < 1e-7) << '\n'
       << "FGMRES iterations per Newton iteration < 60: "

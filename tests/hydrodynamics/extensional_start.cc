@@ -71,12 +71,11 @@ end
   out << "exit code " << code << '\n';
   if (!root)
     return 0;
-  const auto series  = read_named_time_series("start/time-series.csv");
-  bool       steps   = series.rows.size() == 2;
-  double     newton  = 0;
-  double     volume  = 0;
-  double     area    = 0;
-  const auto verdict = [](const bool ok) { return ok ? "ok" : "FAILED"; };
+  const auto series = read_named_time_series("start/time-series.csv");
+  bool       steps  = series.rows.size() == 2;
+  double     newton = 0;
+  double     volume = 0;
+  double     area   = 0;
   for (unsigned int r = 0; r < series.rows.size(); ++r)
     {
       steps = steps && series.value("rejected_steps", r) == 0

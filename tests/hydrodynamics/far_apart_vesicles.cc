@@ -189,7 +189,6 @@ main(int argc, char *argv[])
   const double  kinetic = relative(pair.kinetic, 2 * single.kinetic);
   const double  tilt    = std::abs(std::abs(single.last[0].angle) - M_PI / 2);
 
-  const auto verdict = [](const bool ok) { return ok ? "ok" : "FAILED"; };
   out << "vesicle 2 is vesicle 1 moved by (L, 0) (1e-9): "
       << verdict(*std::max_element(swap.begin(), swap.end()) < 1e-9) << '\n';
   for (const auto &[name, d] : {std::pair("1", one), std::pair("2", two)})

@@ -109,7 +109,6 @@ main(int argc, char *argv[])
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const bool                               root = root_rank();
   std::ofstream                            out  = root_output();
-  const auto verdict = [](const bool ok) { return ok ? "ok" : "FAILED"; };
 
   const std::string close = "    set Checkpoint interval = 0\n  end\nend\n";
   const int         a     = run_study_quietly(set_up("extrapolated") + close

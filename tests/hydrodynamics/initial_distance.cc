@@ -70,12 +70,6 @@ namespace
 {
   using Distance = InitialVesicleBase::DistanceFormula;
 
-  std::string
-  verdict(const bool ok)
-  {
-    return ok ? "ok" : "FAILED";
-  }
-
   /// Zero set, unit slope and the value at the centre of the level-set
   /// distance of @p vesicle.
   template <int dim>

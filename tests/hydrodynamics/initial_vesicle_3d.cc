@@ -22,6 +22,8 @@
 #include <cmath>
 #include <fstream>
 
+#include "../root_output.h"
+
 using namespace vesicle_iga;
 using namespace dealii;
 
@@ -57,9 +59,8 @@ int
 main()
 {
   std::ofstream  out("output");
-  const auto     verdict = [](const bool ok) { return ok ? "ok" : "FAILED"; };
-  const double   R       = 0.7;
-  const double   angle   = 30;
+  const double   R     = 0.7;
+  const double   angle = 30;
   const Point<3> centre(0.1, -0.2, 0.3);
   for (const double v : {0.6, 0.9, 1.0})
     {

@@ -29,6 +29,8 @@
 #include <fstream>
 #include <iostream>
 
+#include "../root_output.h"
+
 using namespace vesicle_iga;
 using namespace dealii;
 
@@ -48,12 +50,13 @@ int
 main()
 {
   std::ofstream        out("output");
-  const SplineSpace<3> space({KnotVector::uniform(3, 16, 0., 2.),
-                              KnotVector::uniform(3, 16, 0., 2.),
-                              KnotVector::uniform(3, 16, 0., 2., -1, true)});
-  const Point<3>       centre(1., 1., 1.);
-  const double         R = 0.6, eps = 0.25, z0 = 1.2;
-  const double         r = std::sqrt(R * R - (z0 - 1.) * (z0 - 1.));
+  const SplineSpace<3> space(
+    std::array<KnotVector, 3>{{KnotVector::uniform(3, 16, 0., 2.),
+                               KnotVector::uniform(3, 16, 0., 2.),
+                               KnotVector::uniform(3, 16, 0., 2., -1, true)}});
+  const Point<3> centre(1., 1., 1.);
+  const double   R = 0.6, eps = 0.25, z0 = 1.2;
+  const double   r = std::sqrt(R * R - (z0 - 1.) * (z0 - 1.));
 
   const unsigned int  nc = 2;
   std::vector<double> at_greville;
@@ -67,7 +70,6 @@ main()
     }
   const std::vector<double> natural
     = interpolate_at_greville_points(space, at_greville, nc);
-  const auto verdict = [](const bool ok) { return ok ? "ok" : "FAILED"; };
 
   const auto section  = section_at_z(space, natural, nc, z0);
   const auto contours = zero_contours(section.space, section.natural, nc, 0);

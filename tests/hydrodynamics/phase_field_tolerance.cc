@@ -121,7 +121,6 @@ main(int argc, char *argv[])
   const auto rel = [](const double a, const double b) {
     return std::abs(a - b) / std::max(std::abs(b), 1e-300);
   };
-  const auto verdict = [](const bool ok) { return ok ? "ok" : "FAILED"; };
   for (const bool neumann : {false, true})
     {
       const Outcome exact      = run(PhaseSolve::exact, neumann, timer);

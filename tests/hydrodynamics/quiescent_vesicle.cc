@@ -103,7 +103,6 @@ main(int argc, char *argv[])
   const double kinetic = model.get_flow().kinetic_energy_and_divergence().first;
   const auto [advection, forcing] = model.bending_powers();
 
-  const auto verdict = [](const bool ok) { return ok ? "ok" : "FAILED"; };
   out << "energy never rises (largest relative rise <= 1e-12): "
       << verdict(worst_rise <= 1e-12) << '\n'
       << "volume error < 1e-5: " << verdict(worst_volume < 1e-5) << '\n'

@@ -66,8 +66,7 @@ end
   out << "exit code " << code << '\n';
   if (!root)
     return 0;
-  const auto series  = read_named_time_series("quiescent/time-series.csv");
-  const auto verdict = [](const bool ok) { return ok ? "ok" : "FAILED"; };
+  const auto series = read_named_time_series("quiescent/time-series.csv");
   double     rise = 0, volume = 0, area = 0, symmetry = 0, flow_ratio = 0;
   bool       some_flow = true;
   for (unsigned int r = 0; r < series.rows.size(); ++r)

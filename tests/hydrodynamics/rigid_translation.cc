@@ -115,7 +115,6 @@ main(int argc, char *argv[])
                rest.last.bending_energy - rest.first.bending_energy);
   const double area = relative(moving.area_error, rest.area_error);
 
-  const auto verdict = [](const bool ok) { return ok ? "ok" : "FAILED"; };
   out << "centroid moves as generalized-alpha moves x' = U (0.5 %): "
       << verdict(std::abs(shift / expected - 1) < 0.005) << '\n'
       << "no motion along y (1e-9): " << verdict(std::abs(drift) < 1e-9) << '\n'

@@ -118,7 +118,6 @@ main(int argc, char *argv[])
   const auto rel = [](const double a, const double b) {
     return std::abs(a - b) / std::abs(b);
   };
-  const auto verdict = [](const bool ok) { return ok ? "ok" : "FAILED"; };
   out << "stabilized: count at 16 per unit <= 1.25 x count at 8 per unit: "
       << verdict(fine.per_newton <= 1.25 * coarse.per_newton) << '\n'
       << "stabilized, velocity by GMRES with a V-cycle: count at 16 per "

@@ -66,7 +66,6 @@ main()
   const std::vector<double> natural
     = interpolate_at_greville_points(space, at_greville, nc);
 
-  const auto verdict = [](const bool ok) { return ok ? "ok" : "FAILED"; };
 
   const auto circle       = zero_contours(space, natural, nc, 0, 4);
   double     worst_radius = 0, worst_g = 0, worst_phi = 0;

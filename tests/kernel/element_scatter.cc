@@ -138,13 +138,15 @@ main(int argc, char *argv[])
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   std::ofstream                    out = root_output();
-  check<2>(SplineSpace<2>({KnotVector::uniform(2, 9, 0, 1),
-                           KnotVector::uniform(2, 8, 0, 1, -1, true)}),
+  check<2>(SplineSpace<2>(std::array<KnotVector, 2>{
+             {KnotVector::uniform(2, 9, 0, 1),
+              KnotVector::uniform(2, 8, 0, 1, -1, true)}}),
            2,
            out);
-  check<3>(SplineSpace<3>({KnotVector::uniform(3, 5, 0, 1),
-                           KnotVector::uniform(3, 4, 0, 1),
-                           KnotVector::uniform(2, 6, 0, 1)}),
+  check<3>(SplineSpace<3>(
+             std::array<KnotVector, 3>{{KnotVector::uniform(3, 5, 0, 1),
+                                        KnotVector::uniform(3, 4, 0, 1),
+                                        KnotVector::uniform(2, 6, 0, 1)}}),
            1,
            out);
 }

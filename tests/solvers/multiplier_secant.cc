@@ -22,6 +22,8 @@
 #include <fstream>
 #include <functional>
 
+#include "../root_output.h"
+
 using namespace vesicle_iga;
 
 namespace
@@ -53,7 +55,6 @@ int
 main()
 {
   std::ofstream out("output");
-  const auto    verdict = [](const bool ok) { return ok ? "ok" : "FAILED"; };
 
   const std::array<double, 4> A{{2, 1, 0.5, 3}};
   const std::array<double, 2> b{{1, 2}};

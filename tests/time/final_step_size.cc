@@ -16,12 +16,13 @@
 #include <cmath>
 #include <fstream>
 
+#include "../root_output.h"
+
 int
 main()
 {
   std::ofstream out("output");
   using vesicle_iga::final_step_size;
-  const auto verdict = [](const bool ok) { return ok ? "ok" : "FAILED"; };
   const auto near
     = [](const double a, const double b) { return std::abs(a - b) < 1e-14; };
 

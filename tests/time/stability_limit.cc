@@ -33,16 +33,12 @@
 #include <iomanip>
 #include <sstream>
 
+#include "../root_output.h"
+
 using namespace vesicle_iga;
 
 namespace
 {
-  std::string
-  verdict(const bool ok)
-  {
-    return ok ? "ok" : "FAILED";
-  }
-
   /// y' = -y, backward Euler, with a stability limit before t = 0.045.
   class DecayWithLimit : public TimeDependentProblem
   {
