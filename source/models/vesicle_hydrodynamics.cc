@@ -755,21 +755,11 @@ namespace vesicle_iga
           v.compress(VectorOperation::insert);
         TrilinosWrappers::MPI::Vector y;
         phase_gram->solve(x[1], y);
-        // X(1) and X(Y) for X = R_0, F_g, F_v: the rows of dV/dt = -(R_0 +
-        // lambda_g F_g + lambda_v F_v)(1) and eta_phi dA/dt.
+        // X(Y) for X = R_0, F_g, F_v: the row of eta_phi dA/dt (the dot
+        // products are global already).
         std::array<double, 6> sums;
         for (unsigned int k = 0; k < 3; ++k)
-          {
-            double total = 0;
-            for (const auto j : x[k].locally_owned_elements())
-              total += x[k](j);
-            sums[k]     = total;
-            sums[3 + k] = x[k] * y;
-          }
-        // (The dot products x * y are global already.)
-        Utilities::MPI::sum(ArrayView<const double>(sums.data(), 3),
-                            dofs.get_mesh().get_communicator(),
-                            ArrayView<double>(sums.data(), 3));
+          sums[3 + k] = x[k] * y;
         if (indicator_volume())
           {
             // V_i = int chi(phi_i) with chi' = c delta_eps: dV/dt = c (beta,
@@ -785,6 +775,21 @@ namespace vesicle_iga
               = membrane::indicator_slope_per_delta(membrane.epsilon) / eta;
             for (unsigned int k = 0; k < 3; ++k)
               sums[k] = -c * (x[k] * z);
+          }
+        else
+          {
+            // X(1): the row of dV/dt = -(R_0 + lambda_g F_g + lambda_v
+            // F_v)(1) for V_i = int phi_i.
+            for (unsigned int k = 0; k < 3; ++k)
+              {
+                double total = 0;
+                for (const auto j : x[k].locally_owned_elements())
+                  total += x[k](j);
+                sums[k] = total;
+              }
+            Utilities::MPI::sum(ArrayView<const double>(sums.data(), 3),
+                                dofs.get_mesh().get_communicator(),
+                                ArrayView<double>(sums.data(), 3));
           }
         const double area   = geometry[VesicleGeometry<dim>::n_sums * i];
         const double volume = geometry[VesicleGeometry<dim>::n_sums * i + 1];
