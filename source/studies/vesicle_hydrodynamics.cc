@@ -789,16 +789,18 @@ namespace vesicle_iga
                           "4).");
         prm.declare_entry(
           "Volume multiplier",
-          "membrane",
+          "indicator",
           Patterns::Selection("membrane|indicator|domain"),
           "Where the volume multiplier lambda_v of (H1), (H13) acts and which "
           "volume it holds. membrane: -lambda_v delta_eps(phi_i) with "
-          "delta_eps of (H12b), V_i = int phi_i (this project's default). "
-          "indicator: the same weight, V_i = int chi(phi_i) with the smoothed "
-          "indicator chi = 15/8 (phi - 2 phi^3 / 3 + phi^5 / 5), whose "
-          "variation is that weight, so that (H13) is a Gram system, well "
-          "posed for every shape; with 'membrane' its determinant changes "
-          "sign near a circle or sphere and the multipliers diverge there "
+          "delta_eps of (H12b), V_i = int phi_i (the default until "
+          "2026-12-07). indicator (the default): the same weight, V_i = int "
+          "chi(phi_i) "
+          "with the smoothed indicator chi = 15/8 (phi - 2 phi^3 / 3 + phi^5 "
+          "/ 5), whose variation is that weight, so that (H13) is a Gram "
+          "system, well posed for every shape; with 'membrane' its "
+          "determinant changes sign near a circle or sphere and the "
+          "multipliers diverge there "
           "(doc/hydrodynamics.md, \"A Gram form of (H13)\"). domain: "
           "-lambda_v everywhere, V_i = int phi_i, the source's (H1); phi_i "
           "then rises off -1 in the whole fluid, by about lambda_v / (4 / (Re "

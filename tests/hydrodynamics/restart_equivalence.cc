@@ -90,12 +90,12 @@ main(int argc, char *argv[])
   const int          code     = run_study_quietly(
     common
     + "set Max steps = 8\nset Restart from = restarted/checkpoint.h5\nend\n"
-                   "set Volume multiplier = indicator\nend\n"
-                   "set Output directory = indicator\n");
+                   "set Volume multiplier = membrane\nend\n"
+                   "set Output directory = membrane\n");
   std::cerr.rdbuf(old_cerr);
   std::string first_line;
   std::getline(std::istringstream(errors.str()) >> std::ws, first_line);
-  out << "restart with 'Volume multiplier = indicator' from a checkpoint of "
-         "'membrane': exit code "
+  out << "restart with 'Volume multiplier = membrane' from a checkpoint of "
+         "'indicator' (the default): exit code "
       << code << "\n  " << first_line << '\n';
 }

@@ -29,11 +29,11 @@ namespace vesicle_iga
     /// - domain: -lambda_v on the whole domain and V_i = int phi_i, the
     ///   source's (H1), (H12c); it lifts phi_i off -1 everywhere ("fog")
     ///   and so moves volume between the far field and the vesicle;
-    /// - membrane (default): -lambda_v delta_eps(phi) with delta_eps of
-    ///   (H12b), V_i = int phi_i; (H13) is then not a Gram system, and its
-    ///   determinant changes sign near a circle or sphere;
-    /// - indicator: -lambda_v delta_eps(phi) as membrane, V_i = int
-    ///   chi(phi_i) with chi' proportional to delta_eps
+    /// - membrane: -lambda_v delta_eps(phi) with delta_eps of (H12b), V_i =
+    ///   int phi_i; (H13) is then not a Gram system, and its determinant
+    ///   changes sign near a circle or sphere;
+    /// - indicator (default): -lambda_v delta_eps(phi) as membrane, V_i =
+    ///   int chi(phi_i) with chi' proportional to delta_eps
     ///   (membrane::smoothed_indicator), so that (H13) is a Gram system,
     ///   well posed for every shape that is not a circle or sphere.
     /// doc/hydrodynamics.md, "Volume multiplier" and "A Gram form of (H13)".
@@ -43,7 +43,7 @@ namespace vesicle_iga
       membrane,
       indicator
     };
-    VolumeMultiplier volume_multiplier = VolumeMultiplier::membrane;
+    VolumeMultiplier volume_multiplier = VolumeMultiplier::indicator;
     /// Whether lambda_v acts on the membrane only (membrane, indicator).
     bool
     local_volume_multiplier() const
