@@ -47,15 +47,19 @@ def main():
         if not files:
             sys.exit("no tension-*.csv in " + directory +
                      " (set Write membrane samples = true)")
+        if len(files) == 1:
+            print("%s: one sample step only (%s): no change to report" %
+                  (directory, os.path.basename(files[0])))
         first, last = measure(files[0]), measure(files[-1])
         for vesicle in sorted(first, key=int):
-            for name, values in ((files[0], first), (files[-1], last)):
+            for name, values in ((files[0], first), (files[-1], last))[
+                    :2 if len(files) > 1 else 1]:
                 area, length = values.get(vesicle, (0.0, 0.0))
                 reduced = 4 * math.pi * area / length**2 if length else 0
                 print("%s %s vesicle %s: A %.5f P %.5f reduced area %.5f" %
                       (directory, os.path.basename(name), vesicle, area,
                        length, reduced))
-            if vesicle in last:
+            if vesicle in last and len(files) > 1:
                 (a0, p0), (a1, p1) = first[vesicle], last[vesicle]
                 print("%s vesicle %s: A changed by %+.3e, P by %+.3e "
                       "(relative)" % (directory, vesicle, a1 / a0 - 1,
