@@ -52,8 +52,10 @@ def main():
                   (directory, os.path.basename(files[0])))
         first, last = measure(files[0]), measure(files[-1])
         for vesicle in sorted(first, key=int):
-            for name, values in ((files[0], first), (files[-1], last))[
-                    :2 if len(files) > 1 else 1]:
+            steps = [(files[0], first)]
+            if len(files) > 1:
+                steps.append((files[-1], last))
+            for name, values in steps:
                 area, length = values.get(vesicle, (0.0, 0.0))
                 reduced = 4 * math.pi * area / length**2 if length else 0
                 print("%s %s vesicle %s: A %.5f P %.5f reduced area %.5f" %
